@@ -1,0 +1,497 @@
+#include "nmmSolid/io/dictionary/dictionary.H"
+#include "nmmSolid/io/dictionary/dictionaryParser.H"
+
+#include <algorithm>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+namespace nmm
+{
+
+dictionary::~dictionary() = default;
+
+
+dictionary::dictionary(dictionary&& other) noexcept
+:
+    name_(std::move(other.name_)),
+    parent_(other.parent_),
+    entries_(std::move(other.entries_)),
+    where_(other.where_)
+{
+    rebuildIndex();
+}
+
+
+dictionary& dictionary::operator=(dictionary&& other) noexcept
+{
+    name_ = std::move(other.name_);
+    parent_ = other.parent_;
+    entries_ = std::move(other.entries_);
+    where_ = other.where_;
+    rebuildIndex();
+    return *this;
+}
+
+
+void dictionary::rebuildIndex()
+{
+    index_.clear();
+    patterns_.clear();
+    for (auto& e : entries_)
+    {
+        index_[e->keyword()] = e.get();
+        if (e->isPattern()) patterns_.push_back(e.get());
+        if (e->isDict()) e->dict().parent_ = this;
+    }
+}
+
+
+std::unique_ptr<dictionary> dictionary::clone() const
+{
+    auto d = std::make_unique<dictionary>(name_);
+    d->where_ = where_;
+    d->entries_.reserve(entries_.size());
+    for (const auto& e : entries_)
+    {
+        d->entries_.push_back(e->clone(d.get()));
+    }
+    d->rebuildIndex();
+    return d;
+}
+
+
+dictionary dictionary::read(const std::filesystem::path& file, const readOptions& opts)
+{
+    return dictionaryParser(opts).parseFile(file);
+}
+
+
+dictionary dictionary::parse
+(
+    std::string_view text,
+    const std::string& name,
+    const readOptions& opts
+)
+{
+    return dictionaryParser(opts).parseText(text, name);
+}
+
+
+std::string dictionary::scopedName() const
+{
+    if (!parent_) return {};
+    for (const auto& e : parent_->entries_)
+    {
+        if (e->isDict() && &e->dict() == this)
+        {
+            const std::string up = parent_->scopedName();
+            return up.empty() ? e->keyword() : up + "/" + e->keyword();
+        }
+    }
+    return name_;
+}
+
+
+const dictionary& dictionary::topDict() const
+{
+    const dictionary* d = this;
+    while (d->parent_) d = d->parent_;
+    return *d;
+}
+
+
+std::vector<std::string> dictionary::toc() const
+{
+    std::vector<std::string> keys;
+    keys.reserve(entries_.size());
+    for (const auto& e : entries_) keys.push_back(e->keyword());
+    return keys;
+}
+
+
+const entry* dictionary::findEntry
+(
+    const std::string& key,
+    bool recursive,
+    bool patterns
+) const
+{
+    for (const dictionary* d = this; d; d = recursive ? d->parent_ : nullptr)
+    {
+        auto it = d->index_.find(key);
+        if (it != d->index_.end()) return it->second;
+        if (patterns)
+        {
+            for (auto p = d->patterns_.rbegin(); p != d->patterns_.rend(); ++p)
+            {
+                if ((*p)->matches(key)) return *p;
+            }
+        }
+    }
+    return nullptr;
+}
+
+
+entry* dictionary::findEntry(const std::string& key, bool recursive, bool patterns)
+{
+    const dictionary& self = *this;
+    return const_cast<entry*>(self.findEntry(key, recursive, patterns));
+}
+
+
+namespace
+{
+
+// One step of a scoped key: a sub-dictionary of d named key
+const dictionary* childDict(const dictionary* d, const std::string& key)
+{
+    if (!d) return nullptr;
+    const entry* e = d->findEntry(key, false, true);
+    return (e && e->isDict()) ? &e->dict() : nullptr;
+}
+
+std::vector<std::string> split(const std::string& s, char sep)
+{
+    std::vector<std::string> parts;
+    std::string cur;
+    for (char c : s)
+    {
+        if (c == sep) { parts.push_back(cur); cur.clear(); }
+        else cur += c;
+    }
+    parts.push_back(cur);
+    return parts;
+}
+
+// "a/b/c", "../a", "/a/b": slash syntax
+const entry* findSlashScoped(const dictionary& start, const std::string& key)
+{
+    const dictionary* d = &start;
+    std::vector<std::string> parts = split(key, '/');
+    std::size_t i = 0;
+    bool anchored = false;
+    if (!parts.empty() && parts[0].empty())
+    {
+        d = &start.topDict();
+        i = 1;
+        anchored = true;
+    }
+    for (; i + 1 < parts.size(); ++i)
+    {
+        const std::string& p = parts[i];
+        if (p.empty() || p == ".") continue;
+        if (p == "..")
+        {
+            d = d->parent();
+            if (!d) return nullptr;
+            anchored = true;
+            continue;
+        }
+        if (!anchored)
+        {
+            // The first component may be found in an enclosing scope
+            const entry* e = d->findEntry(p, true, true);
+            d = (e && e->isDict()) ? &e->dict() : nullptr;
+            anchored = true;
+        }
+        else
+        {
+            d = childDict(d, p);
+        }
+        if (!d) return nullptr;
+    }
+    const std::string& last = parts.back();
+    if (last.empty()) return nullptr;
+    return d->findEntry(last, !anchored, true);
+}
+
+// ":a.b", "^a.b", "..a", "a.b": OpenFOAM's older dot syntax
+const entry* findDotScoped(const dictionary& start, const std::string& key)
+{
+    const dictionary* d = &start;
+    std::string rest = key;
+    bool anchored = false;
+    if (rest[0] == ':' || rest[0] == '^')
+    {
+        d = &start.topDict();
+        rest.erase(0, 1);
+        anchored = true;
+    }
+    else if (rest[0] == '.')
+    {
+        // Each dot after the first goes one level up
+        std::size_t n = 0;
+        while (n < rest.size() && rest[n] == '.') ++n;
+        for (std::size_t k = 1; k < n; ++k)
+        {
+            d = d->parent();
+            if (!d) return nullptr;
+        }
+        rest.erase(0, n);
+        anchored = true;
+    }
+    // Keywords may contain dots themselves: try the longest match first
+    while (!rest.empty())
+    {
+        if (const entry* e = d->findEntry(rest, !anchored, true)) return e;
+        std::size_t dot = std::string::npos;
+        const entry* sub = nullptr;
+        for (dot = rest.rfind('.'); dot != std::string::npos && dot > 0;
+             dot = rest.rfind('.', dot - 1))
+        {
+            sub = d->findEntry(rest.substr(0, dot), !anchored, true);
+            if (sub && sub->isDict()) break;
+            sub = nullptr;
+            if (dot == 0) break;
+        }
+        if (!sub) return nullptr;
+        d = &sub->dict();
+        rest.erase(0, dot + 1);
+        anchored = true;
+    }
+    return nullptr;
+}
+
+} // End anonymous namespace
+
+
+const entry* dictionary::findScoped(const std::string& key) const
+{
+    if (key.empty()) return nullptr;
+    if (key.find('/') != std::string::npos) return findSlashScoped(*this, key);
+    if (key[0] == ':' || key[0] == '^' || key.find('.') != std::string::npos)
+    {
+        return findDotScoped(*this, key);
+    }
+    return findEntry(key, true, true);
+}
+
+
+const entry& dictionary::lookupEntry(const std::string& key) const
+{
+    if (const entry* e = findEntry(key)) return *e;
+    std::string msg = "Entry '" + key + "' not found in dictionary "
+        + (scopedName().empty() ? name_ : scopedName());
+    const std::string hint = didYouMean(key, toc());
+    if (!hint.empty()) msg += "; " + hint;
+    throw IOerror(msg, where_, key);
+}
+
+
+const tokenList& dictionary::lookup(const std::string& key) const
+{
+    const entry& e = lookupEntry(key);
+    if (e.isDict()) throw e.error("expected a value, found a dictionary");
+    return e.stream();
+}
+
+
+bool dictionary::isDict(const std::string& key) const
+{
+    const entry* e = findEntry(key);
+    return e && e->isDict();
+}
+
+
+const dictionary* dictionary::findDict(const std::string& key) const
+{
+    const entry* e = findEntry(key);
+    return (e && e->isDict()) ? &e->dict() : nullptr;
+}
+
+
+const dictionary& dictionary::subDict(const std::string& key) const
+{
+    const entry& e = lookupEntry(key);
+    if (!e.isDict())
+    {
+        throw e.error("expected a sub-dictionary { ... }, found a value");
+    }
+    return e.dict();
+}
+
+
+dictionary& dictionary::subDict(const std::string& key)
+{
+    const dictionary& self = *this;
+    return const_cast<dictionary&>(self.subDict(key));
+}
+
+
+const dictionary& dictionary::subOrEmptyDict(const std::string& key) const
+{
+    static const dictionary emptyDict;
+    const dictionary* d = findDict(key);
+    return d ? *d : emptyDict;
+}
+
+
+entry* dictionary::add(std::unique_ptr<entry> e, bool merge)
+{
+    auto it = index_.find(e->keyword());
+    if (it == index_.end())
+    {
+        if (e->isDict()) e->dict().parent_ = this;
+        entry* stored = e.get();
+        entries_.push_back(std::move(e));
+        index_[stored->keyword()] = stored;
+        if (stored->isPattern()) patterns_.push_back(stored);
+        return stored;
+    }
+
+    entry* existing = it->second;
+    const std::string key = e->keyword();
+    if (merge && existing->isDict() && e->isDict())
+    {
+        existing->dict().merge(e->dict());
+        return existing;
+    }
+
+    // Replace in place: the keyword keeps its position, as in OpenFOAM
+    for (auto& slot : entries_)
+    {
+        if (slot.get() == existing)
+        {
+            if (e->isDict()) e->dict().parent_ = this;
+            slot = std::move(e);
+            break;
+        }
+    }
+    rebuildIndex();
+    return index_.at(key);
+}
+
+
+entry* dictionary::set(const std::string& key, const std::string& valueText)
+{
+    dictionary tmp = parse(key + " " + valueText + ";", "<set " + key + ">");
+    auto e = tmp.entries_.front()->clone(this);
+    return add(std::move(e), false);
+}
+
+
+void dictionary::merge(const dictionary& other)
+{
+    for (const auto& e : other.entries_)
+    {
+        add(e->clone(this), true);
+    }
+}
+
+
+bool dictionary::remove(const std::string& keyOrPattern)
+{
+    const std::size_t before = entries_.size();
+    auto it = index_.find(keyOrPattern);
+    if (it != index_.end())
+    {
+        const entry* target = it->second;
+        entries_.erase(std::remove_if(entries_.begin(), entries_.end(),
+            [&](const auto& e) { return e.get() == target; }), entries_.end());
+    }
+    rebuildIndex();
+    return entries_.size() != before;
+}
+
+
+void dictionary::clear()
+{
+    entries_.clear();
+    index_.clear();
+    patterns_.clear();
+}
+
+
+namespace
+{
+
+void writeKeyword(std::ostream& os, const entry& e)
+{
+    if (e.quotedKeyword())
+    {
+        os << token(token::kind::string, e.keyword()).str();
+    }
+    else
+    {
+        os << e.keyword();
+    }
+}
+
+
+void writeEntry(std::ostream& os, const entry& e, int indent)
+{
+    const std::string pad(std::size_t(indent) * 4, ' ');
+    os << pad;
+    if (e.isDict())
+    {
+        writeKeyword(os, e);
+        os << '\n' << pad << "{\n";
+        e.dict().write(os, indent + 1);
+        os << pad << "}\n";
+        return;
+    }
+    std::ostringstream key;
+    writeKeyword(key, e);
+    const std::string k = key.str();
+    os << k;
+    if (!e.stream().empty())
+    {
+        // OpenFOAM aligns values at column 16
+        os << std::string(k.size() < 15 ? 16 - k.size() : 1, ' ');
+        writeTokens(os, e.stream());
+    }
+    os << ";\n";
+}
+
+} // End anonymous namespace
+
+
+void dictionary::write(std::ostream& os, int indent) const
+{
+    for (const auto& e : entries_) writeEntry(os, *e, indent);
+}
+
+
+void dictionary::writeFile
+(
+    std::ostream& os,
+    const std::string& className,
+    const std::string& object
+) const
+{
+    os  << "/*--------------------------------*- C++ -*----------------------------------*\\\n"
+        << "  nmmSolid: Numerical Manifold Method for deformable geomaterials\n"
+        << "\\*---------------------------------------------------------------------------*/\n";
+    const entry* header = findEntry("FoamFile", false, false);
+    if (header && header->isDict())
+    {
+        os << "FoamFile\n{\n";
+        header->dict().write(os, 1);
+        os << "}\n";
+    }
+    else
+    {
+        os  << "FoamFile\n{\n"
+            << "    version     2.0;\n"
+            << "    format      ascii;\n"
+            << "    class       " << className << ";\n";
+        if (!object.empty()) os << "    object      " << object << ";\n";
+        os  << "}\n";
+    }
+    os  << "// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //\n\n";
+    for (const auto& e : entries_)
+    {
+        if (e.get() != header) writeEntry(os, *e, 0);
+    }
+    os  << "\n// ************************************************************************* //\n";
+}
+
+
+std::ostream& operator<<(std::ostream& os, const dictionary& d)
+{
+    d.write(os, 0);
+    return os;
+}
+
+} // End namespace nmm

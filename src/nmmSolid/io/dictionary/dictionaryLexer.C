@@ -1,0 +1,353 @@
+#include "nmmSolid/io/dictionary/dictionaryLexer.H"
+
+#include <cctype>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
+namespace nmm
+{
+
+namespace
+{
+
+bool isSpace(char c)
+{
+    return std::isspace(static_cast<unsigned char>(c)) != 0;
+}
+
+bool isDigit(char c)
+{
+    return c >= '0' && c <= '9';
+}
+
+// OpenFOAM's word::valid
+bool isWordChar(char c)
+{
+    return !isSpace(c) && c != '"' && c != '\'' && c != '/' && c != ';'
+        && c != '{' && c != '}' && c != '\0';
+}
+
+bool isPunctuation(char c)
+{
+    return std::strchr(";()[]{}:,=+*/", c) != nullptr && c != '\0';
+}
+
+} // End anonymous namespace
+
+
+char dictionaryLexer::get()
+{
+    const char c = src_[pos_++];
+    if (c == '\n')
+    {
+        ++line_;
+        column_ = 1;
+    }
+    else
+    {
+        ++column_;
+    }
+    return c;
+}
+
+
+void dictionaryLexer::skipSpaceAndComments()
+{
+    while (!atEof())
+    {
+        const char c = peekChar();
+        if (isSpace(c))
+        {
+            get();
+        }
+        else if (c == '/' && peekChar(1) == '/')
+        {
+            while (!atEof() && peekChar() != '\n') get();
+        }
+        else if (c == '/' && peekChar(1) == '*')
+        {
+            const sourcePosition start = here();
+            get();
+            get();
+            while (!(peekChar() == '*' && peekChar(1) == '/'))
+            {
+                if (atEof())
+                {
+                    throw IOerror("unterminated comment: '/*' is never closed "
+                        "by '*/'", start);
+                }
+                get();
+            }
+            get();
+            get();
+        }
+        else
+        {
+            return;
+        }
+    }
+}
+
+
+void dictionaryLexer::readString(token& t)
+{
+    t.type = token::kind::string;
+    get();  // opening quote
+    bool escaped = false;
+    while (true)
+    {
+        if (atEof())
+        {
+            throw IOerror("unterminated string: no closing '\"' before the "
+                "end of the file", t.where);
+        }
+        const char c = get();
+        if (c == '\n')
+        {
+            if (!escaped)
+            {
+                throw IOerror("unterminated string: newline inside quotes "
+                    "(escape it with '\\' to continue a string)", t.where);
+            }
+            t.text.pop_back();   // the escaping backslash
+            escaped = false;
+            continue;
+        }
+        if (c == '"')
+        {
+            if (!escaped) return;
+            t.text.back() = '"';
+            escaped = false;
+            continue;
+        }
+        escaped = (c == '\\') && !escaped;
+        t.text += c;
+    }
+}
+
+
+void dictionaryLexer::readVerbatim(token& t)
+{
+    t.type = token::kind::verbatim;
+    get();  // '#'
+    get();  // '{'
+    while (!(peekChar() == '#' && peekChar(1) == '}'))
+    {
+        if (atEof())
+        {
+            throw IOerror("unterminated verbatim block: '#{' is never closed "
+                "by '#}'", t.where);
+        }
+        t.text += get();
+    }
+    get();
+    get();
+}
+
+
+void dictionaryLexer::readVariable(token& t)
+{
+    t.type = token::kind::variable;
+    get();  // '$'
+    if (peekChar() == '{')
+    {
+        int depth = 0;
+        do
+        {
+            if (atEof())
+            {
+                throw IOerror("unterminated variable: '${' is never closed "
+                    "by '}'", t.where);
+            }
+            const char c = get();
+            if (c == '{') ++depth;
+            else if (c == '}') --depth;
+            t.text += c;
+        } while (depth > 0);
+        return;
+    }
+    // Scoped names may contain '/' ($../a, $/a/b) besides the word characters
+    int depth = 0;
+    while (!atEof())
+    {
+        const char c = peekChar();
+        if (!isWordChar(c) && c != '/') break;
+        if (c == '/' && (peekChar(1) == '/' || peekChar(1) == '*')) break;
+        if (c == '(') ++depth;
+        else if (c == ')')
+        {
+            if (depth == 0) break;
+            --depth;
+        }
+        t.text += get();
+    }
+    if (t.text.empty())
+    {
+        throw IOerror("'$' is not followed by a variable name", t.where);
+    }
+}
+
+
+void dictionaryLexer::readNumber(token& t)
+{
+    std::string& s = t.text;
+    const bool hex = (peekChar() == '0' && (peekChar(1) == 'x' || peekChar(1) == 'X'))
+        || ((peekChar() == '-' || peekChar() == '+') && peekChar(1) == '0'
+            && (peekChar(2) == 'x' || peekChar(2) == 'X'));
+    while (!atEof())
+    {
+        const char c = peekChar();
+        const bool ok = isDigit(c) || c == '+' || c == '-' || c == '.'
+            || c == 'e' || c == 'E'
+            || (hex && (std::isxdigit(static_cast<unsigned char>(c))
+                        || c == 'x' || c == 'X' || c == 'p' || c == 'P'));
+        if (!ok) break;
+        // A sign is part of the number only at its start or after an exponent
+        if ((c == '+' || c == '-') && !s.empty())
+        {
+            const char prev = s.back();
+            const bool afterExp = hex ? (prev == 'p' || prev == 'P')
+                                      : (prev == 'e' || prev == 'E');
+            if (!afterExp) break;
+        }
+        s += get();
+    }
+
+    if (s == "-" || s == "+")
+    {
+        t.type = token::kind::punctuation;
+        return;
+    }
+
+    const char* begin = s.c_str();
+    const bool integerForm = [&]
+    {
+        std::size_t i = (s[0] == '-' || s[0] == '+') ? 1 : 0;
+        if (i == s.size()) return false;
+        for (; i < s.size(); ++i) if (!isDigit(s[i])) return false;
+        return true;
+    }();
+
+    char* end = nullptr;
+    errno = 0;
+    if (integerForm || (hex && s.find_first_of(".pP") == std::string::npos))
+    {
+        const long long v = std::strtoll(begin, &end, 0 + (hex ? 16 : 10));
+        if (end == begin + s.size() && errno == 0)
+        {
+            t.type = token::kind::integer;
+            t.label = v;
+            t.scalar = double(v);
+            return;
+        }
+    }
+    errno = 0;
+    const double v = std::strtod(begin, &end);
+    if (end != begin + s.size() || s.back() == 'e' || s.back() == 'E')
+    {
+        throw IOerror("bad number '" + s + "'", t.where);
+    }
+    t.type = token::kind::floating;
+    t.scalar = v;
+}
+
+
+void dictionaryLexer::readWordTail(std::string& text)
+{
+    // Parentheses inside a word belong to it when balanced: "div(phi,U)"
+    int depth = 0;
+    while (!atEof())
+    {
+        const char c = peekChar();
+        if (!isWordChar(c)) break;
+        if (c == '(') ++depth;
+        else if (c == ')')
+        {
+            if (depth == 0) break;
+            --depth;
+        }
+        text += get();
+    }
+}
+
+
+void dictionaryLexer::readWord(token& t)
+{
+    t.type = token::kind::word;
+    readWordTail(t.text);
+    if (t.text.empty())
+    {
+        const char c = peekChar();
+        throw IOerror(std::string("unexpected character '") + c + "'", t.where);
+    }
+}
+
+
+bool dictionaryLexer::next(token& t)
+{
+    if (!pushed_.empty())
+    {
+        t = std::move(pushed_.back());
+        pushed_.pop_back();
+        return true;
+    }
+    skipSpaceAndComments();
+    if (atEof()) return false;
+
+    t = token();
+    t.where = here();
+    const char c = peekChar();
+
+    const bool signedNumber = c == '+'
+        && (isDigit(peekChar(1)) || (peekChar(1) == '.' && isDigit(peekChar(2))));
+    if (isPunctuation(c) && !signedNumber)
+    {
+        t.type = token::kind::punctuation;
+        t.text.assign(1, get());
+    }
+    else if (c == '"')
+    {
+        readString(t);
+    }
+    else if (c == '#')
+    {
+        if (peekChar(1) == '{')
+        {
+            readVerbatim(t);
+        }
+        else
+        {
+            t.type = token::kind::directive;
+            t.text = get();
+            readWordTail(t.text);
+            if (t.text == "#") t.type = token::kind::word;
+        }
+    }
+    else if (c == '$')
+    {
+        readVariable(t);
+    }
+    else if (isDigit(c) || c == '-' || c == '+' || (c == '.' && isDigit(peekChar(1)))
+          || (c == '.' && peekChar(1) == '\0'))
+    {
+        readNumber(t);
+    }
+    else
+    {
+        readWord(t);
+    }
+    return true;
+}
+
+
+tokenList tokenize(std::string_view text, const std::string& name)
+{
+    dictionaryLexer lx(text, internFileName(name));
+    tokenList tokens;
+    token t;
+    while (lx.next(t)) tokens.push_back(std::move(t));
+    return tokens;
+}
+
+} // End namespace nmm

@@ -1,0 +1,869 @@
+#include "nmmSolid/io/dictionary/dictionaryParser.H"
+#include "nmmSolid/io/dictionary/dictionaryLexer.H"
+#include "nmmSolid/io/dictionary/exprEval.H"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace nmm
+{
+
+namespace
+{
+
+// Deeper nesting than any real file, shallow enough for the stack
+constexpr int maxNesting = 512;
+constexpr std::size_t maxIncludeDepth = 64;
+
+std::string readWholeFile(const fs::path& file, bool& ok)
+{
+    std::ifstream is(file, std::ios::binary);
+    ok = static_cast<bool>(is) && !fs::is_directory(file);
+    if (!ok) return {};
+    return std::string(std::istreambuf_iterator<char>(is), {});
+}
+
+const char* matchingOpen(char close)
+{
+    return close == ')' ? "(" : close == ']' ? "[" : "{";
+}
+
+// Keywords visible from d (for "did you mean" on undefined macros)
+std::vector<std::string> visibleKeywords(const dictionary& d)
+{
+    std::vector<std::string> keys;
+    for (const dictionary* p = &d; p; p = p->parent())
+    {
+        for (const auto& k : p->toc()) keys.push_back(k);
+    }
+    return keys;
+}
+
+} // End anonymous namespace
+
+
+const std::vector<std::string>& dictionaryParser::directiveNames()
+{
+    static const std::vector<std::string> names =
+    {
+        "#include", "#includeIfPresent", "#sinclude", "#includeEtc",
+        "#sincludeEtc", "#includeFunc", "#remove", "#inputMode", "#default",
+        "#overwrite", "#warn", "#error", "#eval", "#calc", "#codeStream"
+    };
+    return names;
+}
+
+
+dictionaryParser::dictionaryParser(readOptions opts)
+:
+    opts_(std::move(opts)),
+    etcDirs_(opts_.etcDirs)
+{
+    if (const char* nmmDir = std::getenv("NMM_PROJECT_DIR"))
+    {
+        etcDirs_.push_back(fs::path(nmmDir) / "etc");
+    }
+#ifdef NMM_SOURCE_ETC_DIR
+    etcDirs_.push_back(NMM_SOURCE_ETC_DIR);
+#endif
+    if (const char* foamDir = std::getenv("WM_PROJECT_DIR"))
+    {
+        etcDirs_.push_back(fs::path(foamDir) / "etc");
+    }
+}
+
+
+fs::path dictionaryParser::caseDirFor(const fs::path& file) const
+{
+    if (opts_.caseDir) return *opts_.caseDir;
+    if (const char* c = std::getenv("FOAM_CASE"); c && *c) return c;
+    // <case>/system/controlDict, <case>/constant/x, <case>/0/D
+    const fs::path dir = fs::absolute(file).parent_path();
+    const std::string leaf = dir.filename().string();
+    const bool timeDir = !leaf.empty()
+        && (std::isdigit(static_cast<unsigned char>(leaf[0])) != 0);
+    if (leaf == "system" || leaf == "constant" || timeDir)
+    {
+        return dir.parent_path();
+    }
+    return dir;
+}
+
+
+dictionary dictionaryParser::parseFile(const fs::path& file)
+{
+    bool ok = false;
+    const std::string text = readWholeFile(file, ok);
+    const std::string* name = internFileName(file.string());
+    if (!ok)
+    {
+        throw IOerror("cannot open file " + file.string(), {name, 0, 0});
+    }
+    dictionary d(file.string());
+    d.where_ = {name, 1, 1};
+    std::error_code ec;
+    includeStack_.push_back(fs::weakly_canonical(file, ec));
+    parseSource(text, name, d);
+    includeStack_.pop_back();
+    return d;
+}
+
+
+dictionary dictionaryParser::parseText(std::string_view text, const std::string& name)
+{
+    const std::string* file = internFileName(name);
+    dictionary d(name);
+    d.where_ = {file, 1, 1};
+    parseSource(std::string(text), file, d);
+    return d;
+}
+
+
+void dictionaryParser::parseSource
+(
+    const std::string& text,
+    const std::string* file,
+    dictionary& d
+)
+{
+    dictionaryLexer lx(text, file);
+    parseEntries(lx, d, nullptr);
+}
+
+
+void dictionaryParser::parseEntries
+(
+    dictionaryLexer& lx,
+    dictionary& d,
+    const token* open
+)
+{
+    token t;
+    while (lx.next(t))
+    {
+        if (t.isPunct('}'))
+        {
+            if (open) return;
+            throw IOerror("unbalanced braces: '}' without a matching '{'",
+                t.where);
+        }
+        if (t.isPunct(';')) continue;   // stray ';' is harmless, as in OpenFOAM
+
+        if (!opts_.expand)
+        {
+            if (t.isDirective() || t.isVariable())
+            {
+                // Keep the directive and its arguments as a primitive entry
+                tokenList v = readValue(lx, d, t);
+                d.add(std::make_unique<entry>(t.str(), std::move(v), t.where), false);
+                continue;
+            }
+        }
+        else if (t.isDirective())
+        {
+            directive(lx, d, t);
+            continue;
+        }
+        else if (t.isVariable())
+        {
+            substituteKeyword(lx, d, t);
+            continue;
+        }
+
+        if (t.isStringOrWord())
+        {
+            parseEntry(lx, d, t);
+        }
+        else
+        {
+            throw IOerror("expected a keyword, found " + t.describe(), t.where);
+        }
+    }
+    if (open)
+    {
+        throw IOerror("unbalanced braces: '{' opened at line "
+            + std::to_string(open->where.line) + " is never closed",
+            open->where);
+    }
+}
+
+
+void dictionaryParser::parseEntry
+(
+    dictionaryLexer& lx,
+    dictionary& d,
+    const token& key
+)
+{
+    token t;
+    if (!lx.next(t))
+    {
+        throw IOerror("keyword '" + key.text + "' has no value and no ';' "
+            "before the end of the file", key.where, key.text);
+    }
+    if (t.isPunct('{'))
+    {
+        parseDictEntry(lx, d, key.text, key.isString(), key, t);
+        return;
+    }
+    if (opts_.expand && t.isVariable())
+    {
+        // "key $dict;" makes key a copy of the dictionary, as in OpenFOAM
+        token after;
+        const bool more = lx.next(after);
+        if (more && after.isPunct(';'))
+        {
+            const entry* e = d.findScoped(variableName(t, d));
+            if (e && e->isDict())
+            {
+                addEntry(d, std::make_unique<entry>(key.text, e->dict().clone(),
+                    key.where, key.isString()));
+                return;
+            }
+        }
+        if (more) lx.putBack(after);
+    }
+    lx.putBack(t);
+    tokenList value = readValue(lx, d, key);
+    addEntry(d, std::make_unique<entry>(key.text, std::move(value), key.where,
+        key.isString()));
+}
+
+
+void dictionaryParser::parseDictEntry
+(
+    dictionaryLexer& lx,
+    dictionary& d,
+    const std::string& key,
+    bool quoted,
+    const token& keyTok,
+    const token& open
+)
+{
+    static thread_local int depth = 0;
+    if (depth >= maxNesting)
+    {
+        throw IOerror("dictionaries nested more than "
+            + std::to_string(maxNesting) + " deep", open.where, key);
+    }
+    auto sub = std::make_unique<dictionary>(d.name());
+    sub->parent_ = &d;   // macros inside see the enclosing scopes
+    sub->where_ = open.where;
+    ++depth;
+    try
+    {
+        parseEntries(lx, *sub, &open);
+    }
+    catch (...)
+    {
+        --depth;
+        throw;
+    }
+    --depth;
+    addEntry(d, std::make_unique<entry>(key, std::move(sub), keyTok.where, quoted));
+}
+
+
+tokenList dictionaryParser::readValue
+(
+    dictionaryLexer& lx,
+    dictionary& d,
+    const token& key
+)
+{
+    tokenList value;
+    std::vector<token> open;   // brackets not yet closed
+    token t;
+    while (true)
+    {
+        if (!lx.next(t))
+        {
+            if (!open.empty())
+            {
+                throw IOerror("unbalanced '" + open.back().text + "' in the "
+                    "value of keyword '" + key.text + "': never closed",
+                    open.back().where, key.text);
+            }
+            throw IOerror("missing ';' at the end of entry '" + key.text
+                + "' (end of file reached)", key.where, key.text);
+        }
+        if (t.isPunct(';') && open.empty()) return value;
+
+        if (t.isPunct('(') || t.isPunct('[') || t.isPunct('{'))
+        {
+            if (open.size() >= std::size_t(maxNesting))
+            {
+                throw IOerror("lists nested more than "
+                    + std::to_string(maxNesting) + " deep", t.where, key.text);
+            }
+            open.push_back(t);
+        }
+        else if (t.isPunct(')') || t.isPunct(']') || t.isPunct('}'))
+        {
+            if (open.empty())
+            {
+                if (t.isPunct('}'))
+                {
+                    throw IOerror("missing ';' at the end of entry '" + key.text
+                        + "' (entry starts at line " + std::to_string(key.where.line)
+                        + "; found '}')", t.where, key.text);
+                }
+                throw IOerror("unbalanced '" + t.text + "' in the value of "
+                    "keyword '" + key.text + "': no matching '"
+                    + matchingOpen(t.text[0]) + "'", t.where, key.text);
+            }
+            if (open.back().text != matchingOpen(t.text[0]))
+            {
+                throw IOerror("'" + t.text + "' does not match '"
+                    + open.back().text + "' opened at line "
+                    + std::to_string(open.back().where.line), t.where, key.text);
+            }
+            open.pop_back();
+        }
+        else if (opts_.expand && t.isVariable())
+        {
+            tokenList sub = expandVariable(t, d);
+            value.insert(value.end(), std::make_move_iterator(sub.begin()),
+                std::make_move_iterator(sub.end()));
+            continue;
+        }
+        else if (opts_.expand && t.isDirective())
+        {
+            value.push_back(evaluate(lx, d, t));
+            continue;
+        }
+        value.push_back(std::move(t));
+    }
+}
+
+
+void dictionaryParser::addEntry(dictionary& d, std::unique_ptr<entry> e)
+{
+    const inputMode mode = oneShot_ ? oneShotMode_ : mode_;
+    oneShot_ = false;
+
+    const entry* existing = d.findEntry(e->keyword(), false, false);
+    switch (mode)
+    {
+        case inputMode::merge:
+            d.add(std::move(e), true);
+            return;
+        case inputMode::overwrite:
+            d.add(std::move(e), false);
+            return;
+        case inputMode::protect:
+            if (!existing) d.add(std::move(e), false);
+            return;
+        case inputMode::warn:
+            if (existing)
+            {
+                std::cerr << "--> FOAM Warning: " << e->where().str()
+                    << ": duplicate entry '" << e->keyword()
+                    << "' ignored (first defined at " << existing->where().str()
+                    << ")\n";
+                return;
+            }
+            d.add(std::move(e), false);
+            return;
+        case inputMode::error:
+            if (existing)
+            {
+                throw IOerror("duplicate entry '" + e->keyword()
+                    + "' (first defined at " + existing->where().str() + ")",
+                    e->where(), e->keyword());
+            }
+            d.add(std::move(e), false);
+            return;
+    }
+}
+
+
+std::string dictionaryParser::variableName(const token& var, const dictionary& d) const
+{
+    const std::string& name = var.text;
+    if (name.size() >= 2 && name.front() == '{' && name.back() == '}')
+    {
+        // ${...}: the content may itself hold macros
+        return expandString(name.substr(1, name.size() - 2), d, var.where);
+    }
+    return name;
+}
+
+
+tokenList dictionaryParser::expandVariable(const token& var, const dictionary& d) const
+{
+    const std::string name = variableName(var, d);
+    if (const entry* e = d.findScoped(name))
+    {
+        if (!e->isDict()) return e->stream();
+        // A dictionary used as a value: its entries as "{ ... }" tokens
+        std::ostringstream os;
+        os << "{\n";
+        e->dict().write(os, 0);
+        os << "}";
+        tokenList t = tokenize(os.str(), var.where.fileName());
+        for (auto& tok : t) tok.where = var.where;
+        return t;
+    }
+    if (const char* env = std::getenv(name.c_str()))
+    {
+        tokenList t = tokenize(env, "$" + name);
+        for (auto& tok : t) tok.where = var.where;
+        return t;
+    }
+    std::string msg = "undefined macro '$" + var.text + "'";
+    const std::string hint = didYouMean(name, visibleKeywords(d));
+    if (!hint.empty()) msg += "; " + hint;
+    throw IOerror(msg, var.where, "$" + var.text);
+}
+
+
+void dictionaryParser::substituteKeyword
+(
+    dictionaryLexer& lx,
+    dictionary& d,
+    const token& var
+)
+{
+    const std::string name = variableName(var, d);
+    token next;
+    const bool more = lx.next(next);
+    if (more && next.isPunct('{'))
+    {
+        // "$name { ... }": the keyword is the value of $name
+        const entry* e = d.findScoped(name);
+        if (!e || e->isDict() || e->stream().empty())
+        {
+            throw IOerror("undefined macro '$" + var.text + "' used as a "
+                "keyword", var.where, "$" + var.text);
+        }
+        const token& k = e->stream().front();
+        parseDictEntry(lx, d, k.text, k.isString(), var, next);
+        return;
+    }
+    if (more) lx.putBack(next);
+
+    const entry* e = d.findScoped(name);
+    if (!e)
+    {
+        std::string msg = "undefined macro '$" + var.text + "'";
+        const std::string hint = didYouMean(name, visibleKeywords(d));
+        if (!hint.empty()) msg += "; " + hint;
+        throw IOerror(msg, var.where, "$" + var.text);
+    }
+    if (!e->isDict())
+    {
+        throw IOerror("'$" + var.text + "' stands where a keyword belongs, "
+            "so it must name a dictionary, but it names a value", var.where,
+            "$" + var.text);
+    }
+    // Copy first: the source may be d itself or one of its parents
+    const auto copy = e->dict().clone();
+    const bool merge = mode_ == inputMode::merge || mode_ == inputMode::overwrite;
+    for (const auto& sub : copy->entries())
+    {
+        d.add(sub->clone(&d), merge);
+    }
+}
+
+
+std::string dictionaryParser::expandString
+(
+    const std::string& s,
+    const dictionary& d,
+    const sourcePosition& where
+) const
+{
+    std::string out;
+    std::size_t i = 0;
+    while (i < s.size())
+    {
+        const char c = s[i];
+        if (c == '~' && i == 0 && (s.size() == 1 || s[1] == '/'))
+        {
+            const char* home = std::getenv("HOME");
+            out += home ? home : "";
+            ++i;
+            continue;
+        }
+        if (c == '<')
+        {
+            const std::size_t close = s.find('>', i);
+            if (close != std::string::npos)
+            {
+                const std::string tag = s.substr(i + 1, close - i - 1);
+                const fs::path caseDir = caseDirFor(where.fileName());
+                if (tag == "case") { out += caseDir.string(); i = close + 1; continue; }
+                if (tag == "system" || tag == "constant")
+                {
+                    out += (caseDir / tag).string();
+                    i = close + 1;
+                    continue;
+                }
+                if (tag == "etc" && !etcDirs_.empty())
+                {
+                    out += etcDirs_.front().string();
+                    i = close + 1;
+                    continue;
+                }
+            }
+        }
+        if (c != '$' || i + 1 >= s.size())
+        {
+            out += c;
+            ++i;
+            continue;
+        }
+        std::string name;
+        if (s[i + 1] == '{')
+        {
+            int depth = 0;
+            std::size_t j = i + 1;
+            for (; j < s.size(); ++j)
+            {
+                if (s[j] == '{') ++depth;
+                else if (s[j] == '}' && --depth == 0) break;
+            }
+            if (j >= s.size())
+            {
+                throw IOerror("unterminated '${' in \"" + s + "\"", where);
+            }
+            name = expandString(s.substr(i + 2, j - i - 2), d, where);
+            i = j + 1;
+        }
+        else
+        {
+            std::size_t j = i + 1;
+            while (j < s.size()
+                && (std::isalnum(static_cast<unsigned char>(s[j]))
+                    || s[j] == '_' || s[j] == '.' || s[j] == ':' || s[j] == '^'
+                    || s[j] == '/'))
+            {
+                ++j;
+            }
+            // A trailing '/' or '.' belongs to the text, not the name
+            while (j > i + 1 && (s[j - 1] == '/' || s[j - 1] == '.')) --j;
+            name = s.substr(i + 1, j - i - 1);
+            i = j;
+        }
+        if (name.empty())
+        {
+            out += '$';
+            continue;
+        }
+        if (name == "FOAM_CASE")
+        {
+            out += caseDirFor(where.fileName()).string();
+        }
+        else if (const entry* e = d.findScoped(name); e && !e->isDict())
+        {
+            std::ostringstream os;
+            for (std::size_t k = 0; k < e->stream().size(); ++k)
+            {
+                const token& t = e->stream()[k];
+                if (k) os << ' ';
+                os << (t.isString() ? t.text : t.str());
+            }
+            out += os.str();
+        }
+        else if (const char* env = std::getenv(name.c_str()))
+        {
+            out += env;
+        }
+        else
+        {
+            throw IOerror("undefined variable '$" + name + "' in \"" + s + "\"",
+                where, "$" + name);
+        }
+    }
+    return out;
+}
+
+
+void dictionaryParser::directive(dictionaryLexer& lx, dictionary& d, const token& dir)
+{
+    const std::string& name = dir.text;
+    if (name.rfind("#include", 0) == 0 || name.rfind("#sinclude", 0) == 0)
+    {
+        if (name == "#includeFunc")
+        {
+            includeFunc(lx, d, dir);
+        }
+        else
+        {
+            includeFile(lx, d, dir);
+        }
+        return;
+    }
+    if (name == "#remove")
+    {
+        removeEntries(lx, d, dir);
+        return;
+    }
+    auto modeFromWord = [&](const token& w) -> inputMode
+    {
+        if (w.text == "merge" || w.text == "default") return inputMode::merge;
+        if (w.text == "overwrite") return inputMode::overwrite;
+        if (w.text == "protect") return inputMode::protect;
+        if (w.text == "warn") return inputMode::warn;
+        if (w.text == "error") return inputMode::error;
+        std::string msg = "unknown #inputMode '" + w.text + "'";
+        const std::string hint = didYouMean(w.text,
+            {"merge", "overwrite", "protect", "warn", "error", "default"});
+        if (!hint.empty()) msg += "; " + hint;
+        throw IOerror(msg + " (valid: merge overwrite protect warn error default)",
+            w.where, "#inputMode");
+    };
+    if (name == "#inputMode")
+    {
+        token w;
+        if (!lx.next(w) || !w.isWord())
+        {
+            throw IOerror("#inputMode needs a mode: merge, overwrite, protect, "
+                "warn, error or default", dir.where, name);
+        }
+        mode_ = modeFromWord(w);
+        return;
+    }
+    if (name == "#default" || name == "#overwrite" || name == "#warn" || name == "#error")
+    {
+        oneShot_ = true;
+        oneShotMode_ = name == "#default" ? inputMode::protect
+            : name == "#overwrite" ? inputMode::overwrite
+            : name == "#warn" ? inputMode::warn : inputMode::error;
+        return;
+    }
+    if (name == "#calc" || name == "#codeStream" || name == "#eval")
+    {
+        throw IOerror(name + " gives a value and must follow a keyword, "
+            "e.g. 'x " + name + " \"...\";'", dir.where, name);
+    }
+    std::string msg = "unknown directive '" + name + "'";
+    const std::string hint = didYouMean(name, directiveNames());
+    if (!hint.empty()) msg += "; " + hint;
+    throw IOerror(msg, dir.where, name);
+}
+
+
+void dictionaryParser::includeFile(dictionaryLexer& lx, dictionary& d, const token& dir)
+{
+    const std::string& name = dir.text;
+    const bool etc = name == "#includeEtc" || name == "#sincludeEtc";
+    const bool optional = name == "#includeIfPresent" || name == "#sinclude"
+        || name == "#sincludeEtc";
+    if (!etc && !optional && name != "#include")
+    {
+        std::string msg = "unknown directive '" + name + "'";
+        const std::string hint = didYouMean(name, directiveNames());
+        if (!hint.empty()) msg += "; " + hint;
+        throw IOerror(msg, dir.where, name);
+    }
+    token arg;
+    if (!lx.next(arg) || !arg.isStringOrWord())
+    {
+        throw IOerror(name + " needs a file name", dir.where, name);
+    }
+    const std::string expanded = expandString(arg.text, d, arg.where);
+
+    fs::path target;
+    if (etc)
+    {
+        for (const auto& dirPath : etcDirs_)
+        {
+            if (fs::is_regular_file(dirPath / expanded))
+            {
+                target = dirPath / expanded;
+                break;
+            }
+        }
+    }
+    else
+    {
+        target = expanded;
+        if (target.is_relative())
+        {
+            const fs::path here = arg.where.fileName();
+            target = (here.has_parent_path() ? here.parent_path() : fs::path(".")) / target;
+        }
+    }
+
+    bool ok = false;
+    const std::string text = target.empty() ? std::string() : readWholeFile(target, ok);
+    if (!ok)
+    {
+        if (optional) return;
+        std::string msg = "cannot open included file \"" + arg.text + "\"";
+        if (etc)
+        {
+            msg += " (searched:";
+            for (const auto& p : etcDirs_) msg += " " + p.string();
+            msg += ")";
+        }
+        else if (expanded != target.string())
+        {
+            msg += " (" + target.string() + ")";
+        }
+        throw IOerror(msg, arg.where, name);
+    }
+
+    std::error_code ec;
+    const fs::path canonical = fs::weakly_canonical(target, ec);
+    if (std::find(includeStack_.begin(), includeStack_.end(), canonical)
+        != includeStack_.end())
+    {
+        std::string chain;
+        for (const auto& p : includeStack_) chain += p.string() + " -> ";
+        throw IOerror("include cycle: " + chain + canonical.string(), arg.where, name);
+    }
+    if (includeStack_.size() >= maxIncludeDepth)
+    {
+        throw IOerror("includes nested more than "
+            + std::to_string(maxIncludeDepth) + " deep", arg.where, name);
+    }
+    includeStack_.push_back(canonical);
+    parseSource(text, internFileName(target.string()), d);
+    includeStack_.pop_back();
+}
+
+
+void dictionaryParser::includeFunc(dictionaryLexer& lx, dictionary& d, const token& dir)
+{
+    token arg;
+    if (!lx.next(arg) || !arg.isStringOrWord())
+    {
+        throw IOerror("#includeFunc needs a function name", dir.where, dir.text);
+    }
+    (void)d;
+    throw IOerror("#includeFunc " + arg.text + ": OpenFOAM function-object "
+        "templates are not supported; write the function object's dictionary "
+        "in 'functions' instead", dir.where, dir.text);
+}
+
+
+void dictionaryParser::removeEntries(dictionaryLexer& lx, dictionary& d, const token& dir)
+{
+    token t;
+    if (!lx.next(t))
+    {
+        throw IOerror("#remove needs a keyword or a list of keywords", dir.where,
+            dir.text);
+    }
+    std::vector<token> keys;
+    if (t.isPunct('('))
+    {
+        while (lx.next(t) && !t.isPunct(')'))
+        {
+            if (!t.isStringOrWord())
+            {
+                throw IOerror("#remove: expected a keyword, found " + t.describe(),
+                    t.where, dir.text);
+            }
+            keys.push_back(t);
+        }
+        if (!t.isPunct(')'))
+        {
+            throw IOerror("#remove: list is never closed by ')'", dir.where,
+                dir.text);
+        }
+    }
+    else if (t.isStringOrWord())
+    {
+        keys.push_back(t);
+    }
+    else
+    {
+        throw IOerror("#remove: expected a keyword, found " + t.describe(),
+            t.where, dir.text);
+    }
+    for (const token& k : keys)
+    {
+        // A quoted key is a pattern over the keywords of this dictionary
+        entry probe(k.text, tokenList{}, k.where, k.isString());
+        for (const auto& existing : d.toc())
+        {
+            if (probe.matches(existing)) d.remove(existing);
+        }
+    }
+}
+
+
+token dictionaryParser::evaluate(dictionaryLexer& lx, const dictionary& d, const token& dir)
+{
+    if (dir.text == "#calc" || dir.text == "#codeStream")
+    {
+        throw IOerror(dir.text + " is not supported: it compiles C++ code at "
+            "run time. Write the value, or use #eval for arithmetic", dir.where,
+            dir.text);
+    }
+    if (dir.text != "#eval")
+    {
+        std::string msg = "directive '" + dir.text + "' cannot stand in a value";
+        const std::string hint = didYouMean(dir.text, {"#eval"});
+        if (!hint.empty()) msg += "; " + hint;
+        throw IOerror(msg, dir.where, dir.text);
+    }
+
+    // #eval "expr", #eval{ expr } (a verbatim block) or #eval { expr }
+    token arg;
+    if (!lx.next(arg))
+    {
+        throw IOerror("#eval needs an expression", dir.where, dir.text);
+    }
+    std::string expr;
+    if (arg.isString() || arg.type == token::kind::verbatim)
+    {
+        expr = arg.text;
+    }
+    else if (arg.isPunct('{'))
+    {
+        int depth = 1;
+        token t;
+        std::ostringstream os;
+        while (depth > 0)
+        {
+            if (!lx.next(t))
+            {
+                throw IOerror("#eval: '{' is never closed", arg.where, dir.text);
+            }
+            if (t.isPunct('{')) ++depth;
+            if (t.isPunct('}') && --depth == 0) break;
+            os << t.str() << ' ';
+        }
+        expr = os.str();
+    }
+    else
+    {
+        throw IOerror("#eval needs a quoted expression, found " + arg.describe(),
+            arg.where, dir.text);
+    }
+
+    const std::string expanded = expandString(expr, d, arg.where);
+    double v = 0;
+    try
+    {
+        v = evaluateExpression(expanded);
+    }
+    catch (const std::invalid_argument& err)
+    {
+        throw IOerror(std::string("#eval: ") + err.what(), arg.where, dir.text);
+    }
+    if (!std::isfinite(v))
+    {
+        throw IOerror("#eval \"" + expr + "\" is not a finite number", arg.where,
+            dir.text);
+    }
+    if (v == std::floor(v) && std::fabs(v) < 1e15)
+    {
+        return token::integerNumber(static_cast<long long>(v), dir.where);
+    }
+    return token::number(v, dir.where);
+}
+
+} // End namespace nmm
