@@ -202,6 +202,8 @@ void dictionaryParser::parseEntry
     const token& key
 )
 {
+    // #default/#overwrite apply to this entry, not to entries inside it
+    const inputMode mode = takeMode();
     token t;
     if (!lx.next(t))
     {
@@ -210,7 +212,7 @@ void dictionaryParser::parseEntry
     }
     if (t.isPunct('{'))
     {
-        parseDictEntry(lx, d, key.text, key.isString(), key, t);
+        parseDictEntry(lx, d, key.text, key.isString(), key, t, mode);
         return;
     }
     if (opts_.expand && t.isVariable())
@@ -224,7 +226,7 @@ void dictionaryParser::parseEntry
             if (e && e->isDict())
             {
                 addEntry(d, std::make_unique<entry>(key.text, e->dict().clone(),
-                    key.where, key.isString()));
+                    key.where, key.isString()), mode);
                 return;
             }
         }
@@ -233,7 +235,7 @@ void dictionaryParser::parseEntry
     lx.putBack(t);
     tokenList value = readValue(lx, d, key);
     addEntry(d, std::make_unique<entry>(key.text, std::move(value), key.where,
-        key.isString()));
+        key.isString()), mode);
 }
 
 
@@ -244,7 +246,8 @@ void dictionaryParser::parseDictEntry
     const std::string& key,
     bool quoted,
     const token& keyTok,
-    const token& open
+    const token& open,
+    inputMode mode
 )
 {
     static thread_local int depth = 0;
@@ -267,7 +270,8 @@ void dictionaryParser::parseDictEntry
         throw;
     }
     --depth;
-    addEntry(d, std::make_unique<entry>(key, std::move(sub), keyTok.where, quoted));
+    addEntry(d, std::make_unique<entry>(key, std::move(sub), keyTok.where, quoted),
+        mode);
 }
 
 
@@ -344,10 +348,21 @@ tokenList dictionaryParser::readValue
 }
 
 
-void dictionaryParser::addEntry(dictionary& d, std::unique_ptr<entry> e)
+dictionaryParser::inputMode dictionaryParser::takeMode()
 {
     const inputMode mode = oneShot_ ? oneShotMode_ : mode_;
     oneShot_ = false;
+    return mode;
+}
+
+
+void dictionaryParser::addEntry
+(
+    dictionary& d,
+    std::unique_ptr<entry> e,
+    inputMode mode
+)
+{
 
     const entry* existing = d.findEntry(e->keyword(), false, false);
     switch (mode)
@@ -445,7 +460,7 @@ void dictionaryParser::substituteKeyword
                 "keyword", var.where, "$" + var.text);
         }
         const token& k = e->stream().front();
-        parseDictEntry(lx, d, k.text, k.isString(), var, next);
+        parseDictEntry(lx, d, k.text, k.isString(), var, next, takeMode());
         return;
     }
     if (more) lx.putBack(next);
@@ -733,6 +748,80 @@ void dictionaryParser::includeFile(dictionaryLexer& lx, dictionary& d, const tok
 }
 
 
+namespace
+{
+
+// "name(a, b, key=value)" split into its parts, as OpenFOAM's #includeFunc
+struct functionCall
+{
+    std::string name;
+    std::vector<std::string> args;
+    std::vector<std::pair<std::string, std::string>> named;
+};
+
+std::string trimmed(const std::string& s)
+{
+    const auto b = s.find_first_not_of(" \t\n");
+    const auto e = s.find_last_not_of(" \t\n");
+    return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+functionCall splitFunctionCall(const std::string& spec)
+{
+    functionCall f;
+    const auto open = spec.find('(');
+    f.name = trimmed(spec.substr(0, open));
+    if (open == std::string::npos) return f;
+    const auto close = spec.rfind(')');
+    const std::string inner = spec.substr(open + 1,
+        (close == std::string::npos || close < open ? spec.size() : close) - open - 1);
+    int depth = 0;
+    std::string cur;
+    auto flush = [&]
+    {
+        const std::string a = trimmed(cur);
+        cur.clear();
+        if (a.empty()) return;
+        const auto eq = a.find('=');
+        if (eq == std::string::npos) f.args.push_back(a);
+        else f.named.emplace_back(trimmed(a.substr(0, eq)), trimmed(a.substr(eq + 1)));
+    };
+    for (char c : inner)
+    {
+        if (c == '(') ++depth;
+        if (c == ')') --depth;
+        if (c == ',' && depth == 0) flush();
+        else cur += c;
+    }
+    flush();
+    return f;
+}
+
+// First file called name below dir, in sorted order
+fs::path searchTree(const fs::path& dir, const std::string& name)
+{
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) return {};
+    std::vector<fs::path> children;
+    for (const auto& p : fs::directory_iterator(dir, ec)) children.push_back(p.path());
+    std::sort(children.begin(), children.end());
+    for (const auto& p : children)
+    {
+        if (p.filename() == name && fs::is_regular_file(p, ec)) return p;
+    }
+    for (const auto& p : children)
+    {
+        if (fs::is_directory(p, ec))
+        {
+            if (fs::path found = searchTree(p, name); !found.empty()) return found;
+        }
+    }
+    return {};
+}
+
+} // End anonymous namespace
+
+
 void dictionaryParser::includeFunc(dictionaryLexer& lx, dictionary& d, const token& dir)
 {
     token arg;
@@ -740,10 +829,54 @@ void dictionaryParser::includeFunc(dictionaryLexer& lx, dictionary& d, const tok
     {
         throw IOerror("#includeFunc needs a function name", dir.where, dir.text);
     }
-    (void)d;
-    throw IOerror("#includeFunc " + arg.text + ": OpenFOAM function-object "
-        "templates are not supported; write the function object's dictionary "
-        "in 'functions' instead", dir.where, dir.text);
+    const functionCall call = splitFunctionCall(arg.text);
+
+    // The case's system/ first, then etc/caseDicts/postProcessing
+    fs::path file = caseDirFor(arg.where.fileName()) / "system" / call.name;
+    if (!fs::is_regular_file(file))
+    {
+        file.clear();
+        for (const auto& etc : etcDirs_)
+        {
+            file = searchTree(etc / "caseDicts" / "postProcessing", call.name);
+            if (!file.empty()) break;
+        }
+    }
+    if (file.empty())
+    {
+        throw IOerror("#includeFunc: no function object template '" + call.name
+            + "' in the case's system/ or in caseDicts/postProcessing of the etc "
+            "directories", arg.where, dir.text);
+    }
+
+    readOptions sub = opts_;
+    sub.etcDirs = etcDirs_;
+    dictionary funcs = dictionaryParser(sub).parseFile(file);
+    funcs.remove("FoamFile");
+    std::unique_ptr<dictionary> func = funcs.isDict(call.name)
+        ? funcs.subDict(call.name).clone() : funcs.clone();
+
+    auto wordList = [](const std::vector<std::string>& words)
+    {
+        std::string s = "(";
+        for (const auto& w : words) s += " " + w;
+        return s + " )";
+    };
+    if (call.args.size() == 1) func->set("field", call.args[0]);
+    if (!call.args.empty()) func->set("fields", wordList(call.args));
+    for (const auto& [key, value] : call.named) func->set(key, value);
+
+    // The keyword is the call with the characters a word may not hold removed
+    std::string keyword;
+    for (char c : arg.text)
+    {
+        if (!std::isspace(static_cast<unsigned char>(c))
+         && std::string_view("\"'/;{}").find(c) == std::string_view::npos)
+        {
+            keyword += c;
+        }
+    }
+    d.add(std::make_unique<entry>(keyword, std::move(func), arg.where), true);
 }
 
 

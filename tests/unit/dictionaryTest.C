@@ -1,0 +1,528 @@
+// Unit tests of the FoamFile reader: syntax, macros, directives, look-up
+// order and typed reads. Expected values follow OpenFOAM's documented
+// behaviour; the conformance tests check the same against the real reader.
+
+#include "nmmSolid/io/dictionary/dictionary.H"
+#include "nmmSolid/io/dictionary/dictionaryLexer.H"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using nmm::dictionary;
+using nmm::IOerror;
+
+namespace
+{
+
+dictionary parse(const std::string& text)
+{
+    return dictionary::parse(text, "test");
+}
+
+// The IOerror a text raises (fails the test if none)
+IOerror errorOf(const std::string& text)
+{
+    try
+    {
+        parse(text);
+    }
+    catch (const IOerror& err)
+    {
+        return err;
+    }
+    ADD_FAILURE() << "no error for:\n" << text;
+    return IOerror("none");
+}
+
+struct tempDir
+{
+    std::filesystem::path path;
+    tempDir()
+    {
+        path = std::filesystem::temp_directory_path()
+            / ("nmmDictTest_" + std::to_string(::getpid()) + "_"
+               + std::to_string(counter()++));
+        std::filesystem::create_directories(path);
+    }
+    ~tempDir() { std::filesystem::remove_all(path); }
+    static int& counter() { static int c = 0; return c; }
+    std::filesystem::path write(const std::string& name, const std::string& text) const
+    {
+        const auto p = path / name;
+        std::filesystem::create_directories(p.parent_path());
+        std::ofstream(p) << text;
+        return p;
+    }
+};
+
+} // End anonymous namespace
+
+
+TEST(dictionary, basicEntriesAndNesting)
+{
+    const dictionary d = parse(R"D(
+        FoamFile { version 2.0; format ascii; class dictionary; object x; }
+        a 1;
+        b   2.5;   // comment
+        /* block
+           comment */ c hello;
+        sub { x 1; deeper { y "quoted text"; } }
+    )D");
+    EXPECT_EQ(d.get<int>("a"), 1);
+    EXPECT_DOUBLE_EQ(d.get<double>("b"), 2.5);
+    EXPECT_EQ(d.get<std::string>("c"), "hello");
+    EXPECT_EQ(d.subDict("sub").subDict("deeper").get<std::string>("y"), "quoted text");
+    EXPECT_EQ(d.toc(), (std::vector<std::string>{"FoamFile", "a", "b", "c", "sub"}));
+    EXPECT_EQ(d.subDict("sub").subDict("deeper").scopedName(), "sub/deeper");
+}
+
+
+TEST(dictionary, numbersInEveryForm)
+{
+    const dictionary d = parse(
+        "a 1; b -1; c 1.5e-3; d 1E+5; e .5; f 5.; g -0.0; h +3; i 0x1F; "
+        "j 1e300; k 12345678901234; l -.25e-2; m 0x1.8p1;");
+    EXPECT_EQ(d.get<int>("a"), 1);
+    EXPECT_EQ(d.get<int>("b"), -1);
+    EXPECT_DOUBLE_EQ(d.get<double>("c"), 1.5e-3);
+    EXPECT_DOUBLE_EQ(d.get<double>("d"), 1e5);
+    EXPECT_DOUBLE_EQ(d.get<double>("e"), 0.5);
+    EXPECT_DOUBLE_EQ(d.get<double>("f"), 5.0);
+    EXPECT_TRUE(std::signbit(d.get<double>("g")));
+    EXPECT_EQ(d.get<int>("h"), 3);
+    EXPECT_EQ(d.get<int>("i"), 31);
+    EXPECT_DOUBLE_EQ(d.get<double>("j"), 1e300);
+    EXPECT_EQ(d.get<long long>("k"), 12345678901234LL);
+    EXPECT_DOUBLE_EQ(d.get<double>("l"), -0.0025);
+    EXPECT_DOUBLE_EQ(d.get<double>("m"), 3.0);
+    // An integer read of a floating value is an error, not a truncation
+    EXPECT_THROW(d.get<int>("c"), IOerror);
+    EXPECT_THROW(dictionary::parse("a 1e400x;", "t").get<double>("a"), IOerror);
+}
+
+
+TEST(dictionary, switches)
+{
+    const dictionary d = parse(
+        "a yes; b no; c on; d off; e true; f false; g 1; h 0; i maybe;");
+    for (const char* k : {"a", "c", "e", "g"}) EXPECT_TRUE(d.get<bool>(k)) << k;
+    for (const char* k : {"b", "d", "f", "h"}) EXPECT_FALSE(d.get<bool>(k)) << k;
+    EXPECT_THROW(d.get<bool>("i"), IOerror);
+}
+
+
+TEST(dictionary, stringsAndWords)
+{
+    const dictionary d = parse(R"D(
+        a "with \"escaped\" quotes";
+        b "continued \
+line";
+        c div(phi,U);
+        div(phi,U) Gauss linear;
+        e List<scalar>;
+    )D");
+    EXPECT_EQ(d.get<std::string>("a"), "with \"escaped\" quotes");
+    EXPECT_EQ(d.get<std::string>("b"), "continued line");
+    EXPECT_EQ(d.get<std::string>("c"), "div(phi,U)");
+    EXPECT_EQ(nmm::tokensToString(d.lookup("div(phi,U)")), "Gauss linear");
+    EXPECT_EQ(d.get<std::string>("e"), "List<scalar>");
+}
+
+
+TEST(dictionary, listsSizedAndUniform)
+{
+    const dictionary d = parse(
+        "a (1 2 3); b 3(4 5 6); c 4{7}; d ((0 0) (1 0.5)); e (); "
+        "f 2(1 2 3); v (1 2 3);");
+    EXPECT_EQ(d.get<std::vector<int>>("a"), (std::vector<int>{1, 2, 3}));
+    EXPECT_EQ(d.get<std::vector<int>>("b"), (std::vector<int>{4, 5, 6}));
+    EXPECT_EQ(d.get<std::vector<int>>("c"), (std::vector<int>{7, 7, 7, 7}));
+    const auto pts = d.get<std::vector<std::array<double, 2>>>("d");
+    ASSERT_EQ(pts.size(), 2u);
+    EXPECT_DOUBLE_EQ(pts[1][1], 0.5);
+    EXPECT_TRUE(d.get<std::vector<double>>("e").empty());
+    EXPECT_THROW(d.get<std::vector<int>>("f"), IOerror);   // size mismatch
+    const auto v = d.get<std::array<double, 3>>("v");
+    EXPECT_DOUBLE_EQ(v[2], 3);
+    EXPECT_THROW((d.get<std::array<double, 2>>("v")), IOerror);
+}
+
+
+TEST(dictionary, dimensionedForms)
+{
+    const dictionary d = parse(
+        "nu [0 2 -1 0 0 0 0] 1e-5; E E [1 -1 -2 0 0 0 0] 1e6; plain 3;");
+    EXPECT_DOUBLE_EQ(d.get<double>("nu"), 1e-5);
+    EXPECT_DOUBLE_EQ(d.get<double>("E"), 1e6);
+    EXPECT_DOUBLE_EQ(d.get<double>("plain"), 3);
+}
+
+
+TEST(dictionary, fieldsUniformAndNonuniform)
+{
+    const dictionary d = parse(
+        "internalField uniform (0 0 0);\n"
+        "p nonuniform List<scalar> 3(1 2 3);\n");
+    const nmm::tokenList& p = d.lookup("p");
+    ASSERT_GE(p.size(), 3u);
+    EXPECT_TRUE(p[0].isWord("nonuniform"));
+    EXPECT_TRUE(p[1].isWord("List<scalar>"));
+    nmm::tokenReader r(p);
+    r.next();
+    r.next();
+    EXPECT_EQ(nmm::readValue<std::vector<double>>(r), (std::vector<double>{1, 2, 3}));
+}
+
+
+TEST(dictionary, repeatedKeywordsReplaceInPlaceAndDictionariesMerge)
+{
+    const dictionary d = parse(
+        "a 1; b { x 1; y 2; } c 3; a 4; b { y 5; z 6; }");
+    EXPECT_EQ(d.toc(), (std::vector<std::string>{"a", "b", "c"}));
+    EXPECT_EQ(d.get<int>("a"), 4);
+    EXPECT_EQ(d.subDict("b").get<int>("x"), 1);
+    EXPECT_EQ(d.subDict("b").get<int>("y"), 5);
+    EXPECT_EQ(d.subDict("b").get<int>("z"), 6);
+}
+
+
+TEST(dictionary, macros)
+{
+    const dictionary d = parse(R"D(
+        x 10;
+        v (1 $x 3);
+        a { b { c 7; } };
+        s1 $a/b/c;
+        s2 ${a/b/c};
+        s3 $:a.b.c;
+        s4 $^a.b.c;
+        s5 $a.b.c;
+        inner
+        {
+            y $x;
+            deeper { z $../y; w $/x; u ${../y}; }
+        }
+        base { type fixedValue; value 0; }
+        copied $base;
+        merged { $base; value 1; }
+        dotted.key 3;
+        s6 $dotted.key;
+    )D");
+    EXPECT_EQ(d.get<std::vector<int>>("v"), (std::vector<int>{1, 10, 3}));
+    for (const char* k : {"s1", "s2", "s3", "s4", "s5"})
+    {
+        EXPECT_EQ(d.get<int>(k), 7) << k;
+    }
+    const dictionary& deeper = d.subDict("inner").subDict("deeper");
+    EXPECT_EQ(d.subDict("inner").get<int>("y"), 10);
+    EXPECT_EQ(deeper.get<int>("z"), 10);
+    EXPECT_EQ(deeper.get<int>("w"), 10);
+    EXPECT_EQ(deeper.get<int>("u"), 10);
+    ASSERT_TRUE(d.isDict("copied"));
+    EXPECT_EQ(d.subDict("copied").get<std::string>("type"), "fixedValue");
+    EXPECT_EQ(d.subDict("merged").get<std::string>("type"), "fixedValue");
+    EXPECT_EQ(d.subDict("merged").get<int>("value"), 1);
+    EXPECT_EQ(d.get<int>("s6"), 3);
+}
+
+
+TEST(dictionary, macroSeesOnlyWhatIsAbove)
+{
+    const IOerror err = errorOf("a $b;\nb 1;\n");
+    EXPECT_NE(err.message().find("undefined macro '$b'"), std::string::npos);
+    EXPECT_EQ(err.where().line, 1);
+    EXPECT_EQ(err.where().column, 3);
+}
+
+
+TEST(dictionary, undefinedMacroSuggestsAName)
+{
+    const IOerror err = errorOf("endTime 1;\nstop $endTme;\n");
+    EXPECT_NE(err.message().find("did you mean 'endTime'"), std::string::npos)
+        << err.message();
+    EXPECT_EQ(err.where().line, 2);
+}
+
+
+TEST(dictionary, regexKeysExactFirstThenPatternsLastFirst)
+{
+    const dictionary d = parse(R"D(
+        ".*"      { v 1; }
+        "(U|k)"   { v 2; }
+        "k"       { v 3; }
+        "(?i)abc" { v 4; }
+        U2        { v 5; }
+    )D");
+    EXPECT_EQ(d.subDict("k").get<int>("v"), 3);     // exact match wins
+    EXPECT_EQ(d.subDict("U").get<int>("v"), 2);     // later pattern first
+    EXPECT_EQ(d.subDict("p").get<int>("v"), 1);
+    EXPECT_EQ(d.subDict("ABC").get<int>("v"), 4);   // (?i) ignores case
+    EXPECT_EQ(d.subDict("U2").get<int>("v"), 5);
+    EXPECT_FALSE(d.findEntry("p", false, false));   // patterns off
+}
+
+
+TEST(dictionary, includeChainAndOptionalIncludes)
+{
+    tempDir dir;
+    dir.write("sub/second", "b 2;\n#include \"third\"\n");
+    dir.write("sub/third", "c $a;\n");
+    const auto top = dir.write("top",
+        "a 1;\n#include \"sub/second\"\n#includeIfPresent \"missing\"\n"
+        "#sinclude \"missing2\"\nd 4;\n");
+    const dictionary d = dictionary::read(top);
+    EXPECT_EQ(d.get<int>("b"), 2);
+    EXPECT_EQ(d.get<int>("c"), 1);
+    EXPECT_EQ(d.get<int>("d"), 4);
+    // Positions of included entries name the included file
+    EXPECT_NE(d.lookupEntry("c").where().fileName().find("third"), std::string::npos);
+}
+
+
+TEST(dictionary, includeErrors)
+{
+    tempDir dir;
+    const auto missing = dir.write("missing", "#include \"nothere\"\n");
+    try
+    {
+        dictionary::read(missing);
+        FAIL() << "missing include accepted";
+    }
+    catch (const IOerror& err)
+    {
+        EXPECT_NE(err.message().find("cannot open included file"), std::string::npos);
+        EXPECT_EQ(err.where().line, 1);
+    }
+    dir.write("loopB", "#include \"loopA\"\n");
+    const auto a = dir.write("loopA", "x 1;\n#include \"loopB\"\n");
+    try
+    {
+        dictionary::read(a);
+        FAIL() << "include cycle accepted";
+    }
+    catch (const IOerror& err)
+    {
+        EXPECT_NE(err.message().find("include cycle"), std::string::npos);
+    }
+}
+
+
+TEST(dictionary, includeEtcSearchesEtcDirs)
+{
+    tempDir dir;
+    dir.write("etc/caseDicts/common", "shared 42;\n");
+    const auto top = dir.write("case/system/dict", "#includeEtc \"caseDicts/common\"\n");
+    nmm::readOptions opts;
+    opts.etcDirs = {dir.path / "etc"};
+    EXPECT_EQ(dictionary::read(top, opts).get<int>("shared"), 42);
+}
+
+
+TEST(dictionary, removeAndInputModes)
+{
+    const dictionary d = parse(R"D(
+        a 1; b 2; c 3; d1 4; d2 5; keep 6;
+        #remove a
+        #remove (b c)
+        #remove "d.*"
+        #inputMode protect
+        keep 7;
+        #inputMode overwrite
+        s { x 1; }
+        s { y 2; }
+        #inputMode merge
+        t { x 1; }
+        t { y 2; }
+        #default keep 8;
+        #default fresh 9;
+        #overwrite t { z 3; }
+    )D");
+    EXPECT_EQ(d.toc(), (std::vector<std::string>{"keep", "s", "t", "fresh"}));
+    EXPECT_EQ(d.get<int>("keep"), 6);
+    EXPECT_FALSE(d.subDict("s").found("x"));
+    EXPECT_TRUE(d.subDict("s").found("y"));
+    EXPECT_EQ(d.get<int>("fresh"), 9);
+    EXPECT_EQ(d.subDict("t").toc(), (std::vector<std::string>{"z"}));
+
+    const IOerror dup = errorOf("a 1;\n#inputMode error\na 2;\n");
+    EXPECT_NE(dup.message().find("duplicate entry 'a'"), std::string::npos);
+    EXPECT_EQ(dup.where().line, 3);
+    EXPECT_NO_THROW(parse("a 1;\n#warn a 2;\n"));
+    EXPECT_THROW(parse("a 1;\n#error a 2;\n"), IOerror);
+}
+
+
+TEST(dictionary, evalArithmetic)
+{
+    const dictionary d = parse(R"D(
+        r 2;
+        a #eval "1 + 2*3";
+        b #eval "$r * pi()";
+        c #eval{ sqrt(16) + pow(2, 3) };
+        e #eval "degToRad(180)";
+        f #eval "max(1, 5, 3) - (2 > 1 ? 1 : 0)";
+        g #eval "-${r} / 4";
+    )D");
+    EXPECT_EQ(d.get<int>("a"), 7);
+    EXPECT_NEAR(d.get<double>("b"), 2 * M_PI, 1e-15);
+    EXPECT_EQ(d.get<int>("c"), 12);
+    EXPECT_NEAR(d.get<double>("e"), M_PI, 1e-15);
+    EXPECT_EQ(d.get<int>("f"), 4);
+    EXPECT_DOUBLE_EQ(d.get<double>("g"), -0.5);
+    EXPECT_THROW(parse("a #eval \"1/0\";"), IOerror);
+    EXPECT_THROW(parse("a #eval \"foo(1)\";"), IOerror);
+    EXPECT_THROW(parse("a #eval \"1 +\";"), IOerror);
+}
+
+
+TEST(dictionary, compilingDirectivesAreUnsupported)
+{
+    for (const char* text :
+         {"a #calc \"1+2\";", "a #codeStream { code #{ os << 1; #}; };"})
+    {
+        const IOerror err = errorOf(text);
+        EXPECT_NE(err.message().find("not supported"), std::string::npos) << text;
+    }
+}
+
+
+TEST(dictionary, unknownDirectiveSuggests)
+{
+    const IOerror err = errorOf("#inclde \"x\"\n");
+    EXPECT_NE(err.message().find("did you mean '#include'"), std::string::npos);
+}
+
+
+TEST(dictionary, syntaxErrorsNameLineAndColumn)
+{
+    struct expectation { const char* text; const char* message; int line; int column; };
+    const expectation cases[] =
+    {
+        {"a 1;\nb { c 2;\n", "never closed", 2, 3},
+        {"a 1;\n}\n", "without a matching '{'", 2, 1},
+        {"a 1\nb 2;\n", "", 0, 0},                      // reads "a 1 b 2": fine
+        {"a (1 2;\n", "never closed", 1, 3},
+        {"a \"abc\n\";\n", "unterminated string", 1, 3},
+        {"a 1;\n/* open\n", "unterminated comment", 2, 1},
+        {"a 1.2.3;\n", "bad number", 1, 3},
+        {"a 1;\nb { c 2 }\n", "missing ';'", 2, 9},
+        {"a (1 2];\n", "does not match", 1, 7},
+        {"a 1;\nb\n", "no value", 2, 1},
+        {"a 1;\n( x );\n", "expected a keyword", 2, 1},
+    };
+    for (const auto& c : cases)
+    {
+        if (!*c.message)
+        {
+            EXPECT_NO_THROW(parse(c.text)) << c.text;
+            continue;
+        }
+        const IOerror err = errorOf(c.text);
+        EXPECT_NE(err.message().find(c.message), std::string::npos)
+            << c.text << "\n -> " << err.message();
+        EXPECT_EQ(err.where().line, c.line) << c.text;
+        EXPECT_EQ(err.where().column, c.column) << c.text;
+        EXPECT_EQ(err.where().fileName(), "test");
+    }
+}
+
+
+TEST(dictionary, typedReadErrorsNameTheKeyword)
+{
+    const dictionary d = parse("endTime abc;\nlist (1 2 x);\n");
+    try
+    {
+        d.get<double>("endTime");
+        FAIL();
+    }
+    catch (const IOerror& err)
+    {
+        EXPECT_EQ(err.keyword(), "endTime");
+        EXPECT_EQ(err.where().line, 1);
+        EXPECT_EQ(err.where().column, 9);
+    }
+    try
+    {
+        d.get<std::vector<double>>("list");
+        FAIL();
+    }
+    catch (const IOerror& err)
+    {
+        EXPECT_EQ(err.where().column, 11);
+    }
+    try
+    {
+        d.get<double>("endTme");
+        FAIL();
+    }
+    catch (const IOerror& err)
+    {
+        EXPECT_NE(err.message().find("did you mean 'endTime'"), std::string::npos);
+    }
+}
+
+
+TEST(dictionary, writeReadsBackIdentically)
+{
+    const std::string text = R"D(
+        a 1; b -2.5e-07; c "q \"x\""; d (1 (2 3) 4);
+        "(U|p)" { solver PCG; tol 1e-06; }
+        s { t { u 3{0}; v 3(1 2 3); } }
+        w [0 1 -1 0 0 0 0] 0.1;
+    )D";
+    const dictionary d1 = parse(text);
+    std::ostringstream os1;
+    d1.write(os1);
+    const dictionary d2 = parse(os1.str());
+    std::ostringstream os2;
+    d2.write(os2);
+    EXPECT_EQ(os1.str(), os2.str());
+    EXPECT_DOUBLE_EQ(d2.get<double>("b"), -2.5e-07);
+    EXPECT_EQ(d2.get<std::string>("c"), "q \"x\"");
+    EXPECT_TRUE(d2.findEntry("U")->isPattern());
+    EXPECT_EQ(d2.subDict("s").subDict("t").get<std::vector<int>>("u"),
+              (std::vector<int>{0, 0, 0}));
+}
+
+
+TEST(dictionary, scalarsPrintShortestExact)
+{
+    for (double v : {0.1, 1e-5, 1.0 / 3.0, 6.02214076e23, -0.0, 123456789.0})
+    {
+        const std::string s = nmm::formatScalar(v);
+        EXPECT_EQ(std::stod(s), v) << s;
+    }
+    EXPECT_EQ(nmm::formatScalar(0.1), "0.1");
+}
+
+
+TEST(dictionary, setAndRemove)
+{
+    dictionary d = parse("a 1; b { c 2; }");
+    d.set("a", "(1 2)");
+    d.subDict("b").set("d", "yes");
+    EXPECT_EQ(d.get<std::vector<int>>("a"), (std::vector<int>{1, 2}));
+    EXPECT_TRUE(d.subDict("b").get<bool>("d"));
+    EXPECT_TRUE(d.remove("b"));
+    EXPECT_FALSE(d.found("b"));
+    EXPECT_FALSE(d.remove("b"));
+}
+
+
+TEST(dictionary, deepNestingFailsCleanly)
+{
+    std::string deep;
+    for (int i = 0; i < 5000; ++i) deep += "a { ";
+    EXPECT_THROW(parse(deep), IOerror);
+    std::string lists = "a ";
+    for (int i = 0; i < 5000; ++i) lists += "(";
+    EXPECT_THROW(parse(lists + ";"), IOerror);
+    std::string expr = "a #eval \"";
+    for (int i = 0; i < 5000; ++i) expr += "(";
+    EXPECT_THROW(parse(expr + "1\";"), IOerror);
+}
