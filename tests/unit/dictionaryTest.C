@@ -526,3 +526,34 @@ TEST(dictionary, deepNestingFailsCleanly)
     for (int i = 0; i < 5000; ++i) expr += "(";
     EXPECT_THROW(parse(expr + "1\";"), IOerror);
 }
+
+
+TEST(dictionary, listOfNamedDictionariesWithIncludes)
+{
+    tempDir dir;
+    dir.write("constant/geometry/grains",
+        "grain1 { material quartz; polygon ((0 0) (1 0) (0 1)); }\n"
+        "grain2 { material quartz; polygon ((1 0) (1 1) (0 1)); }\n");
+    const auto mesh = dir.write("system/nmmMeshDict",
+        "s 2;\n"
+        "blocks\n(\n"
+        "    upper { material rock; polygon ((0 $s) (1 $s) (1 3)); }\n"
+        "    #include \"../constant/geometry/grains\"\n"
+        ");\n");
+    const dictionary d = dictionary::read(mesh);
+    const auto blocks = dictionary::entryList(d.lookupEntry("blocks"));
+    ASSERT_EQ(blocks.size(), 3u);
+    EXPECT_EQ(blocks[0]->keyword(), "upper");
+    EXPECT_EQ(blocks[2]->keyword(), "grain2");
+    EXPECT_EQ(blocks[1]->dict().get<std::string>("material"), "quartz");
+    const auto poly = blocks[0]->dict().get<std::vector<std::array<double, 2>>>("polygon");
+    EXPECT_DOUBLE_EQ(poly[1][1], 2.0);
+    // Errors inside an included item still name the included file and line
+    EXPECT_EQ(blocks[2]->where().line, 2);
+    EXPECT_NE(blocks[2]->where().fileName().find("grains"), std::string::npos);
+
+    const dictionary dup = parse("blocks ( a { x 1; } a { x 2; } );");
+    EXPECT_THROW(dictionary::entryList(dup.lookupEntry("blocks")), IOerror);
+    const dictionary bad = parse("blocks ( a 1; );");
+    EXPECT_THROW(dictionary::entryList(bad.lookupEntry("blocks")), IOerror);
+}

@@ -78,6 +78,36 @@ dictionary dictionary::parse
 }
 
 
+std::vector<std::unique_ptr<entry>> dictionary::entryList(const entry& e)
+{
+    if (e.isDict())
+    {
+        throw e.error("expected a list ( name { ... } ... ), found a dictionary");
+    }
+    const tokenList& t = e.stream();
+    if (t.size() < 2 || !t.front().isPunct('(') || !t.back().isPunct(')'))
+    {
+        throw IOerror("expected a list ( name { ... } ... )",
+            t.empty() ? e.where() : t.front().where, e.keyword());
+    }
+    dictionaryParser parser;
+    parser.setInputMode(dictionaryParser::inputMode::error);
+    dictionary items = parser.parseTokens(tokenList(t.begin() + 1, t.end() - 1),
+        e.where().fileName());
+    std::vector<std::unique_ptr<entry>> list = std::move(items.entries_);
+    for (auto& item : list)
+    {
+        if (!item->isDict())
+        {
+            throw item->error("expected '" + item->keyword() + " { ... }' in the "
+                "list '" + e.keyword() + "'");
+        }
+        item->dict().parent_ = nullptr;
+    }
+    return list;
+}
+
+
 std::string dictionary::scopedName() const
 {
     if (!parent_) return {};

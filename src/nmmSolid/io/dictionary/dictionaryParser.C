@@ -126,6 +126,16 @@ dictionary dictionaryParser::parseText(std::string_view text, const std::string&
 }
 
 
+dictionary dictionaryParser::parseTokens(const tokenList& tokens, const std::string& name)
+{
+    dictionary d(name);
+    dictionaryLexer lx({}, internFileName(name));
+    for (auto t = tokens.rbegin(); t != tokens.rend(); ++t) lx.putBack(*t);
+    parseEntries(lx, d, nullptr);
+    return d;
+}
+
+
 void dictionaryParser::parseSource
 (
     const std::string& text,
@@ -340,7 +350,8 @@ tokenList dictionaryParser::readValue
         }
         else if (opts_.expand && t.isDirective())
         {
-            value.push_back(evaluate(lx, d, t));
+            if (isIncludeDirective(t.text)) includeTokens(lx, d, t, value);
+            else value.push_back(evaluate(lx, d, t));
             continue;
         }
         value.push_back(std::move(t));
@@ -667,19 +678,32 @@ void dictionaryParser::directive(dictionaryLexer& lx, dictionary& d, const token
 }
 
 
-void dictionaryParser::includeFile(dictionaryLexer& lx, dictionary& d, const token& dir)
+bool dictionaryParser::isIncludeDirective(const std::string& name)
+{
+    return name == "#include" || name == "#includeIfPresent" || name == "#sinclude"
+        || name == "#includeEtc" || name == "#sincludeEtc";
+}
+
+
+bool dictionaryParser::openInclude
+(
+    dictionaryLexer& lx,
+    const dictionary& d,
+    const token& dir,
+    includedFile& inc
+)
 {
     const std::string& name = dir.text;
-    const bool etc = name == "#includeEtc" || name == "#sincludeEtc";
-    const bool optional = name == "#includeIfPresent" || name == "#sinclude"
-        || name == "#sincludeEtc";
-    if (!etc && !optional && name != "#include")
+    if (!isIncludeDirective(name))
     {
         std::string msg = "unknown directive '" + name + "'";
         const std::string hint = didYouMean(name, directiveNames());
         if (!hint.empty()) msg += "; " + hint;
         throw IOerror(msg, dir.where, name);
     }
+    const bool etc = name == "#includeEtc" || name == "#sincludeEtc";
+    const bool optional = name == "#includeIfPresent" || name == "#sinclude"
+        || name == "#sincludeEtc";
     token arg;
     if (!lx.next(arg) || !arg.isStringOrWord())
     {
@@ -710,10 +734,10 @@ void dictionaryParser::includeFile(dictionaryLexer& lx, dictionary& d, const tok
     }
 
     bool ok = false;
-    const std::string text = target.empty() ? std::string() : readWholeFile(target, ok);
+    inc.text = target.empty() ? std::string() : readWholeFile(target, ok);
     if (!ok)
     {
-        if (optional) return;
+        if (optional) return false;
         std::string msg = "cannot open included file \"" + arg.text + "\"";
         if (etc)
         {
@@ -743,7 +767,51 @@ void dictionaryParser::includeFile(dictionaryLexer& lx, dictionary& d, const tok
             + std::to_string(maxIncludeDepth) + " deep", arg.where, name);
     }
     includeStack_.push_back(canonical);
-    parseSource(text, internFileName(target.string()), d);
+    inc.file = internFileName(target.string());
+    return true;
+}
+
+
+void dictionaryParser::includeFile(dictionaryLexer& lx, dictionary& d, const token& dir)
+{
+    includedFile inc;
+    if (!openInclude(lx, d, dir, inc)) return;
+    parseSource(inc.text, inc.file, d);
+    includeStack_.pop_back();
+}
+
+
+void dictionaryParser::includeTokens
+(
+    dictionaryLexer& lx,
+    dictionary& d,
+    const token& dir,
+    tokenList& value
+)
+{
+    // Inside a value (e.g. a list of blocks) the file's tokens are spliced
+    // in, with its macros and directives resolved
+    includedFile inc;
+    if (!openInclude(lx, d, dir, inc)) return;
+    dictionaryLexer sub(inc.text, inc.file);
+    token t;
+    while (sub.next(t))
+    {
+        if (t.isVariable())
+        {
+            tokenList v = expandVariable(t, d);
+            value.insert(value.end(), v.begin(), v.end());
+        }
+        else if (t.isDirective())
+        {
+            if (isIncludeDirective(t.text)) includeTokens(sub, d, t, value);
+            else value.push_back(evaluate(sub, d, t));
+        }
+        else
+        {
+            value.push_back(std::move(t));
+        }
+    }
     includeStack_.pop_back();
 }
 
