@@ -1,0 +1,24 @@
+/*---------------------------------------------------------------------------*\
+Description
+    Downstream consumer of the installed nmmSolid package: links the
+    library for real (parses a dictionary with a macro) and prints the
+    version it was built against.
+\*---------------------------------------------------------------------------*/
+
+#include "nmmSolid/global/version.H"
+#include "nmmSolid/io/dictionary/dictionary.H"
+
+#include <iostream>
+
+int main()
+{
+    const nmm::dictionary d =
+        nmm::dictionary::parse("a 20; b #eval \"$a + 1\";", "downstream");
+    if (d.get<int>("b") != 21)
+    {
+        std::cerr << "unexpected value of b\n";
+        return 1;
+    }
+    std::cout << "nmmSolid " << nmm::versionString << '\n';
+    return 0;
+}
