@@ -9,6 +9,9 @@ Description
 Usage
     nmmDictionary [options] <file>
 
+    -case <dir>       the case directory for $FOAM_CASE and <case> (default:
+                      found from the file's place in a case)
+
     -expand           print the file with #include, #remove, #eval, macros
                       and the rest resolved (canonical FoamFile form)
     -entry <key>      select one entry by scoped keyword ("a/b/c")
@@ -24,32 +27,18 @@ Usage
     Rewriting a file drops its comments.
 \*---------------------------------------------------------------------------*/
 
+#include "nmmSolid/global/argList/argList.H"
+#include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/dictionary/dictionary.H"
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
 #include <string>
-#include <vector>
 
 namespace
 {
-
-const char* usageText =
-R"(Usage: nmmDictionary [options] <file>
-
-Query and edit FoamFile dictionaries (as OpenFOAM's foamDictionary).
-
-Options:
-  -expand           print the fully expanded dictionary (directives and
-                    macros resolved) in canonical FoamFile form
-  -entry <key>      select an entry by scoped keyword, e.g. "solvers/p"
-  -value            print only the value of the selected entry
-  -keywords         list the keywords of the file or the selected dictionary
-  -set <value>      set the selected entry to <value> and rewrite the file
-  -remove           remove the selected entry and rewrite the file
-  -help             print this help and exit
-)";
 
 struct options
 {
@@ -62,52 +51,40 @@ struct options
     std::string file;
 };
 
-[[noreturn]] void usageError(const std::string& msg)
+nmm::argList makeArgList()
 {
-    std::cerr << "\n--> FOAM FATAL ERROR:\n" << msg << "\n\n" << usageText
-              << "\nFOAM exiting\n\n";
-    std::exit(1);
+    nmm::argList args("nmmDictionary",
+        "Query and edit FoamFile dictionaries (as OpenFOAM's foamDictionary)");
+    args.addArgument("file", "the dictionary file");
+    args.addBoolOption("expand",
+        "print the file with directives and macros resolved");
+    args.addOption("entry", "key", "select an entry by scoped keyword, e.g. solvers/p");
+    args.addBoolOption("value", "print only the value of the selected entry");
+    args.addBoolOption("keywords",
+        "list the keywords of the file or of the selected dictionary");
+    args.addOption("set", "value", "set the selected entry and rewrite the file");
+    args.addBoolOption("remove", "remove the selected entry and rewrite the file");
+    return args;
 }
 
-options parseArgs(int argc, char* argv[])
+options readOptions(const nmm::argList& args)
 {
-    const std::vector<std::string> known =
-        {"-expand", "-entry", "-value", "-keywords", "-set", "-remove", "-help"};
     options o;
-    for (int i = 1; i < argc; ++i)
-    {
-        const std::string a = argv[i];
-        auto argument = [&]() -> std::string
-        {
-            if (i + 1 >= argc) usageError("option " + a + " needs an argument");
-            return argv[++i];
-        };
-        if (a == "-help" || a == "--help") { std::cout << usageText; std::exit(0); }
-        else if (a == "-expand") o.expand = true;
-        else if (a == "-value") o.value = true;
-        else if (a == "-keywords") o.keywords = true;
-        else if (a == "-remove") o.remove = true;
-        else if (a == "-entry") o.entryKey = argument();
-        else if (a == "-set") o.setValue = argument();
-        else if (a.size() > 1 && a[0] == '-')
-        {
-            std::string msg = "unknown option " + a;
-            const std::string hint = nmm::didYouMean(a, known);
-            if (!hint.empty()) msg += "; " + hint;
-            usageError(msg);
-        }
-        else if (o.file.empty()) o.file = a;
-        else usageError("more than one file given: " + o.file + " and " + a);
-    }
-    if (o.file.empty()) usageError("no file given");
+    o.file = args.argument(0);
+    o.expand = args.found("expand");
+    o.value = args.found("value");
+    o.keywords = args.found("keywords");
+    o.remove = args.found("remove");
+    if (args.found("entry")) o.entryKey = args.option("entry");
+    if (args.found("set")) o.setValue = args.option("set");
     if ((o.value || o.setValue || o.remove) && !o.entryKey)
     {
-        usageError("-value, -set and -remove need -entry <key>");
+        throw nmm::fatalError("-value, -set and -remove need -entry <key>");
     }
     if ((o.setValue || o.remove) && o.expand)
     {
-        usageError("-set and -remove rewrite the file: they cannot be combined "
-            "with -expand");
+        throw nmm::fatalError("-set and -remove rewrite the file: they cannot "
+            "be combined with -expand");
     }
     return o;
 }
@@ -179,11 +156,15 @@ void rewrite(const nmm::dictionary& d, const std::string& file)
     std::filesystem::rename(tmp, file);
 }
 
-int run(const options& o)
+int run(int argc, char* argv[])
 {
+    nmm::argList args = makeArgList();
+    if (args.parse(argc, argv) == nmm::argList::parseResult::done) return 0;
+    const options o = readOptions(args);
+
     nmm::readOptions ro;
-    ro.expand = o.expand || (!o.setValue && !o.remove && o.entryKey.has_value());
-    if (o.setValue || o.remove) ro.expand = false;
+    ro.expand = !o.setValue && !o.remove && (o.expand || o.entryKey.has_value());
+    if (args.found("case")) ro.caseDir = args.casePath();   // $FOAM_CASE, <case>
     nmm::dictionary d = nmm::dictionary::read(o.file, ro);
 
     if (o.setValue || o.remove)
@@ -219,21 +200,5 @@ int run(const options& o)
 
 int main(int argc, char* argv[])
 {
-    const options o = parseArgs(argc, argv);
-    try
-    {
-        return run(o);
-    }
-    catch (const nmm::IOerror& err)
-    {
-        std::cout.flush();
-        err.printFoamStyle(std::cerr);
-        return 1;
-    }
-    catch (const std::exception& err)
-    {
-        std::cout.flush();
-        std::cerr << "\n--> FOAM FATAL ERROR:\n" << err.what() << "\n\nFOAM exiting\n\n";
-        return 1;
-    }
+    return nmm::catchFatalErrors([&] { return run(argc, argv); });
 }

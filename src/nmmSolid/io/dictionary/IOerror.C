@@ -119,7 +119,8 @@ std::string didYouMean
         return r;
     };
     const std::string w = lower(word);
-    const int limit = std::max<int>(1, int(word.size()) / 3);
+    // One edit in a one- or two-letter name makes any short name "close"
+    const int limit = word.size() < 3 ? 0 : std::max<int>(1, int(word.size()) / 3);
     int best = limit + 1;
     const std::string* bestName = nullptr;
     for (const auto& c : candidates)
