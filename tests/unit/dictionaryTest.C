@@ -127,7 +127,8 @@ line";
         e List<scalar>;
     )D");
     EXPECT_EQ(d.get<std::string>("a"), "with \"escaped\" quotes");
-    EXPECT_EQ(d.get<std::string>("b"), "continued line");
+    // As OpenFOAM: the backslash goes, the line break stays
+    EXPECT_EQ(d.get<std::string>("b"), "continued \nline");
     EXPECT_EQ(d.get<std::string>("c"), "div(phi,U)");
     EXPECT_EQ(nmm::tokensToString(d.lookup("div(phi,U)")), "Gauss linear");
     EXPECT_EQ(d.get<std::string>("e"), "List<scalar>");
@@ -156,7 +157,11 @@ TEST(dictionary, listsSizedAndUniform)
 TEST(dictionary, dimensionedForms)
 {
     const dictionary d = parse(
-        "nu [0 2 -1 0 0 0 0] 1e-5; E E [1 -1 -2 0 0 0 0] 1e6; plain 3;");
+        "nu [0 2 -1 0 0 0 0] 1e-5; E E [1 -1 -2 0 0 0 0] 1e6; plain 3;"
+        "k [m^2/s^2] 0.5; rho rho [kg/m^3] 1000; g [m s^-2] 9.81;");
+    EXPECT_DOUBLE_EQ(d.get<double>("k"), 0.5);
+    EXPECT_DOUBLE_EQ(d.get<double>("rho"), 1000);
+    EXPECT_DOUBLE_EQ(d.get<double>("g"), 9.81);
     EXPECT_DOUBLE_EQ(d.get<double>("nu"), 1e-5);
     EXPECT_DOUBLE_EQ(d.get<double>("E"), 1e6);
     EXPECT_DOUBLE_EQ(d.get<double>("plain"), 3);
@@ -212,7 +217,22 @@ TEST(dictionary, macros)
         merged { $base; value 1; }
         dotted.key 3;
         s6 $dotted.key;
+        s7 $a.b..b.c;
+        ".*" 99;
+        inList ( { $base; name first; } );
+        caseName $FOAM_CASENAME;
     )D");
+    EXPECT_EQ(d.get<int>("s7"), 7);
+    // A pattern keyword never answers a macro in a value, but does answer
+    // one in keyword position (both as OpenFOAM v1912)
+    EXPECT_THROW(parse("\".*\" 1;\nb $zzz;"), IOerror);
+    const dictionary solvers = parse(
+        "\"(p|rho)\" { solver PCG; } \"(p|rho)Final\" { $p; relTol 0; }");
+    EXPECT_EQ(solvers.subDict("pFinal").get<std::string>("solver"), "PCG");
+    // A dictionary inside a value gives its tokens without braces (the
+    // ';' after $base stays, as in OpenFOAM v1912)
+    EXPECT_EQ(nmm::tokensToString(d.lookup("inList")),
+        "({type fixedValue; value 0;; name first;})");
     EXPECT_EQ(d.get<std::vector<int>>("v"), (std::vector<int>{1, 10, 3}));
     for (const char* k : {"s1", "s2", "s3", "s4", "s5"})
     {
@@ -228,6 +248,28 @@ TEST(dictionary, macros)
     EXPECT_EQ(d.subDict("merged").get<std::string>("type"), "fixedValue");
     EXPECT_EQ(d.subDict("merged").get<int>("value"), 1);
     EXPECT_EQ(d.get<int>("s6"), 3);
+}
+
+
+TEST(dictionary, headersOfIncludedFilesAndSubDictionariesAreDropped)
+{
+    tempDir dir;
+    dir.write("inc", "FoamFile { version 2.0; object inc; }\nx 1;\n");
+    const auto top = dir.write("top",
+        "FoamFile { version 2.0; object top; }\n#include \"inc\"\n"
+        "sub { #include \"inc\"\n FoamFile { object z; } }\n");
+    const dictionary d = dictionary::read(top);
+    EXPECT_EQ(d.subDict("FoamFile").get<std::string>("object"), "top");
+    EXPECT_EQ(d.subDict("sub").toc(), (std::vector<std::string>{"x"}));
+}
+
+
+TEST(dictionary, undefinedBareMacroIsIgnoredAsOpenFOAMDoes)
+{
+    const dictionary d = parse("a 1;\nsub { $nothing; b 2; }\n${_${HOME}};\n");
+    EXPECT_EQ(d.subDict("sub").toc(), (std::vector<std::string>{"b"}));
+    // ... but a macro naming a value where a keyword belongs is an error
+    EXPECT_THROW(parse("a 1;\n$a;\n"), IOerror);
 }
 
 
@@ -374,6 +416,14 @@ TEST(dictionary, evalArithmetic)
     EXPECT_NEAR(d.get<double>("e"), M_PI, 1e-15);
     EXPECT_EQ(d.get<int>("f"), 4);
     EXPECT_DOUBLE_EQ(d.get<double>("g"), -0.5);
+    const dictionary v = parse(
+        "a #eval \"vector(1,2,3)*2 - vector(0,0,1)\";\n"
+        "b #eval \"mag(vector(3,4,0))\";\nc #eval \"-vector(1,0,0)/2\";");
+    EXPECT_EQ((v.get<std::array<int, 3>>("a")), (std::array<int, 3>{2, 4, 5}));
+    EXPECT_EQ(v.get<int>("b"), 5);
+    EXPECT_DOUBLE_EQ((v.get<std::array<double, 3>>("c")[0]), -0.5);
+    EXPECT_THROW(parse("a #eval \"vector(1,2,3) + 1\";"), IOerror);
+    EXPECT_THROW(parse("a #eval \"vector(1,2,3) * vector(1,2,3)\";"), IOerror);
     EXPECT_THROW(parse("a #eval \"1/0\";"), IOerror);
     EXPECT_THROW(parse("a #eval \"foo(1)\";"), IOerror);
     EXPECT_THROW(parse("a #eval \"1 +\";"), IOerror);
@@ -411,7 +461,10 @@ TEST(dictionary, syntaxErrorsNameLineAndColumn)
         {"a 1;\n/* open\n", "unterminated comment", 2, 1},
         {"a 1.2.3;\n", "bad number", 1, 3},
         {"a 1;\nb { c 2 }\n", "missing ';'", 2, 9},
-        {"a (1 2];\n", "does not match", 1, 7},
+        {"a (1 2);\nb (3 4};\n", "does not match", 2, 7},
+        // Square brackets are not balanced in values (unit names end in a
+        // word: [m^2/s]), so a stray ']' leaves the '(' open
+        {"a (1 2];\n", "never closed", 1, 3},
         {"a 1;\nb\n", "no value", 2, 1},
         {"a 1;\n( x );\n", "expected a keyword", 2, 1},
     };

@@ -173,70 +173,61 @@ entry* dictionary::findEntry(const std::string& key, bool recursive, bool patter
 namespace
 {
 
-// One step of a scoped key: a sub-dictionary of d named key
-const dictionary* childDict(const dictionary* d, const std::string& key)
+// OpenFOAM matches a macro in a value literally, one in keyword position
+// ("$p;") against pattern keywords too
+thread_local bool scopedPatterns = false;
+
+const entry* exact(const dictionary* d, const std::string& key, bool recursive)
 {
-    if (!d) return nullptr;
-    const entry* e = d->findEntry(key, false, true);
+    return d ? d->findEntry(key, recursive, scopedPatterns) : nullptr;
+}
+
+const dictionary* childDict(const dictionary* d, const std::string& key, bool recursive)
+{
+    const entry* e = exact(d, key, recursive);
     return (e && e->isDict()) ? &e->dict() : nullptr;
 }
 
-std::vector<std::string> split(const std::string& s, char sep)
-{
-    std::vector<std::string> parts;
-    std::string cur;
-    for (char c : s)
-    {
-        if (c == sep) { parts.push_back(cur); cur.clear(); }
-        else cur += c;
-    }
-    parts.push_back(cur);
-    return parts;
-}
-
-// "a/b/c", "../a", "/a/b": slash syntax
+// "a/b/c", "../a", "/a/b": slash syntax; only the first component may be
+// found in an enclosing scope
 const entry* findSlashScoped(const dictionary& start, const std::string& key)
 {
     const dictionary* d = &start;
-    std::vector<std::string> parts = split(key, '/');
-    std::size_t i = 0;
+    std::size_t pos = 0;
     bool anchored = false;
-    if (!parts.empty() && parts[0].empty())
+    if (key[0] == '/')
     {
         d = &start.topDict();
-        i = 1;
+        pos = 1;
         anchored = true;
     }
-    for (; i + 1 < parts.size(); ++i)
+    while (true)
     {
-        const std::string& p = parts[i];
-        if (p.empty() || p == ".") continue;
-        if (p == "..")
+        const std::size_t slash = key.find('/', pos);
+        const std::string part = key.substr(pos, slash == std::string::npos
+            ? std::string::npos : slash - pos);
+        if (slash == std::string::npos)
+        {
+            return part.empty() ? nullptr : exact(d, part, !anchored);
+        }
+        pos = slash + 1;
+        if (part.empty() || part == ".") continue;
+        if (part == "..")
         {
             d = d->parent();
             if (!d) return nullptr;
-            anchored = true;
-            continue;
-        }
-        if (!anchored)
-        {
-            // The first component may be found in an enclosing scope
-            const entry* e = d->findEntry(p, true, true);
-            d = (e && e->isDict()) ? &e->dict() : nullptr;
-            anchored = true;
         }
         else
         {
-            d = childDict(d, p);
+            d = childDict(d, part, !anchored);
+            if (!d) return nullptr;
         }
-        if (!d) return nullptr;
+        anchored = true;
     }
-    const std::string& last = parts.back();
-    if (last.empty()) return nullptr;
-    return d->findEntry(last, !anchored, true);
 }
 
-// ":a.b", "^a.b", "..a", "a.b": OpenFOAM's older dot syntax
+// ":a.b", "^a.b", "..a", "a.c..b": OpenFOAM's older dot syntax. Keywords
+// may hold dots themselves, so the longest literal match is tried first.
 const entry* findDotScoped(const dictionary& start, const std::string& key)
 {
     const dictionary* d = &start;
@@ -250,7 +241,7 @@ const entry* findDotScoped(const dictionary& start, const std::string& key)
     }
     else if (rest[0] == '.')
     {
-        // Each dot after the first goes one level up
+        // "$.x" is this scope; each further dot goes one level up
         std::size_t n = 0;
         while (n < rest.size() && rest[n] == '.') ++n;
         for (std::size_t k = 1; k < n; ++k)
@@ -261,24 +252,28 @@ const entry* findDotScoped(const dictionary& start, const std::string& key)
         rest.erase(0, n);
         anchored = true;
     }
-    // Keywords may contain dots themselves: try the longest match first
     while (!rest.empty())
     {
-        if (const entry* e = d->findEntry(rest, !anchored, true)) return e;
-        std::size_t dot = std::string::npos;
-        const entry* sub = nullptr;
-        for (dot = rest.rfind('.'); dot != std::string::npos && dot > 0;
-             dot = rest.rfind('.', dot - 1))
+        if (const entry* e = exact(d, rest, !anchored)) return e;
+        // The longest prefix that names a sub-dictionary
+        const dictionary* sub = nullptr;
+        std::size_t dot = rest.rfind('.');
+        for (; dot != std::string::npos && dot > 0; dot = rest.rfind('.', dot - 1))
         {
-            sub = d->findEntry(rest.substr(0, dot), !anchored, true);
-            if (sub && sub->isDict()) break;
-            sub = nullptr;
-            if (dot == 0) break;
+            sub = childDict(d, rest.substr(0, dot), !anchored);
+            if (sub) break;
         }
         if (!sub) return nullptr;
-        d = &sub->dict();
+        d = sub;
         rest.erase(0, dot + 1);
         anchored = true;
+        // Each further leading dot ("a.c..b") goes one level up
+        while (!rest.empty() && rest[0] == '.')
+        {
+            d = d->parent();
+            if (!d) return nullptr;
+            rest.erase(0, 1);
+        }
     }
     return nullptr;
 }
@@ -286,15 +281,21 @@ const entry* findDotScoped(const dictionary& start, const std::string& key)
 } // End anonymous namespace
 
 
-const entry* dictionary::findScoped(const std::string& key) const
+const entry* dictionary::findScoped(const std::string& key, bool patterns) const
 {
     if (key.empty()) return nullptr;
+    struct restore
+    {
+        bool old = scopedPatterns;
+        ~restore() { scopedPatterns = old; }
+    } guard;
+    scopedPatterns = patterns;
     if (key.find('/') != std::string::npos) return findSlashScoped(*this, key);
     if (key[0] == ':' || key[0] == '^' || key.find('.') != std::string::npos)
     {
         return findDotScoped(*this, key);
     }
-    return findEntry(key, true, true);
+    return findEntry(key, true, patterns);
 }
 
 

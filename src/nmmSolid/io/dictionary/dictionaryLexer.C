@@ -110,7 +110,8 @@ void dictionaryLexer::readString(token& t)
                 throw IOerror("unterminated string: newline inside quotes "
                     "(escape it with '\\' to continue a string)", t.where);
             }
-            t.text.pop_back();   // the escaping backslash
+            // OpenFOAM drops the backslash and keeps the line break
+            t.text.back() = '\n';
             escaped = false;
             continue;
         }

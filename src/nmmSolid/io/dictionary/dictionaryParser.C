@@ -55,7 +55,7 @@ const std::vector<std::string>& dictionaryParser::directiveNames()
     {
         "#include", "#includeIfPresent", "#sinclude", "#includeEtc",
         "#sincludeEtc", "#includeFunc", "#remove", "#inputMode", "#default",
-        "#overwrite", "#warn", "#error", "#eval", "#calc", "#codeStream"
+        "#overwrite", "#merge", "#warn", "#error", "#eval", "#calc", "#codeStream"
     };
     return names;
 }
@@ -108,6 +108,7 @@ dictionary dictionaryParser::parseFile(const fs::path& file)
     }
     dictionary d(file.string());
     d.where_ = {name, 1, 1};
+    caseDir_ = caseDirFor(file);
     std::error_code ec;
     includeStack_.push_back(fs::weakly_canonical(file, ec));
     parseSource(text, name, d);
@@ -121,6 +122,7 @@ dictionary dictionaryParser::parseText(std::string_view text, const std::string&
     const std::string* file = internFileName(name);
     dictionary d(name);
     d.where_ = {file, 1, 1};
+    caseDir_ = caseDirFor(name);
     parseSource(std::string(text), file, d);
     return d;
 }
@@ -129,6 +131,7 @@ dictionary dictionaryParser::parseText(std::string_view text, const std::string&
 dictionary dictionaryParser::parseTokens(const tokenList& tokens, const std::string& name)
 {
     dictionary d(name);
+    caseDir_ = caseDirFor(name);
     dictionaryLexer lx({}, internFileName(name));
     for (auto t = tokens.rbegin(); t != tokens.rend(); ++t) lx.putBack(*t);
     parseEntries(lx, d, nullptr);
@@ -310,7 +313,9 @@ tokenList dictionaryParser::readValue
         }
         if (t.isPunct(';') && open.empty()) return value;
 
-        if (t.isPunct('(') || t.isPunct('[') || t.isPunct('{'))
+        // Square brackets are not balanced in values: unit names such as
+        // [m^2/s^2] end in a word ("s^2]"), as in OpenFOAM
+        if (t.isPunct('(') || t.isPunct('{'))
         {
             if (open.size() >= std::size_t(maxNesting))
             {
@@ -319,7 +324,7 @@ tokenList dictionaryParser::readValue
             }
             open.push_back(t);
         }
-        else if (t.isPunct(')') || t.isPunct(']') || t.isPunct('}'))
+        else if (t.isPunct(')') || t.isPunct('}'))
         {
             if (open.empty())
             {
@@ -351,7 +356,11 @@ tokenList dictionaryParser::readValue
         else if (opts_.expand && t.isDirective())
         {
             if (isIncludeDirective(t.text)) includeTokens(lx, d, t, value);
-            else value.push_back(evaluate(lx, d, t));
+            else
+            {
+                const tokenList r = evaluate(lx, d, t);
+                value.insert(value.end(), r.begin(), r.end());
+            }
             continue;
         }
         value.push_back(std::move(t));
@@ -374,6 +383,10 @@ void dictionaryParser::addEntry
     inputMode mode
 )
 {
+    // Only the header of the file read counts, as in OpenFOAM: those of
+    // included files and of sub-dictionaries are dropped
+    if (e->keyword() == "FoamFile" && (d.parent() || includeDepth_ > 0)) return;
+
 
     const entry* existing = d.findEntry(e->keyword(), false, false);
     switch (mode)
@@ -423,31 +436,41 @@ std::string dictionaryParser::variableName(const token& var, const dictionary& d
 }
 
 
+std::optional<std::string> dictionaryParser::environmentValue(const std::string& name) const
+{
+    if (name == "FOAM_CASE") return caseDir_.string();
+    if (name == "FOAM_CASENAME") return caseDir_.filename().string();
+    if (const char* env = std::getenv(name.c_str())) return std::string(env);
+    return std::nullopt;
+}
+
+
 tokenList dictionaryParser::expandVariable(const token& var, const dictionary& d) const
 {
     const std::string name = variableName(var, d);
+    tokenList t;
     if (const entry* e = d.findScoped(name))
     {
         if (!e->isDict()) return e->stream();
-        // A dictionary used as a value: its entries as "{ ... }" tokens
+        // A dictionary inside a value gives its entries' tokens, without
+        // braces, as in OpenFOAM ("( { $base; name a; } )")
         std::ostringstream os;
-        os << "{\n";
         e->dict().write(os, 0);
-        os << "}";
-        tokenList t = tokenize(os.str(), var.where.fileName());
-        for (auto& tok : t) tok.where = var.where;
-        return t;
+        t = tokenize(os.str(), var.where.fileName());
     }
-    if (const char* env = std::getenv(name.c_str()))
+    else if (const auto env = environmentValue(name))
     {
-        tokenList t = tokenize(env, "$" + name);
-        for (auto& tok : t) tok.where = var.where;
-        return t;
+        t = tokenize(*env, "$" + name);
     }
-    std::string msg = "undefined macro '$" + var.text + "'";
-    const std::string hint = didYouMean(name, visibleKeywords(d));
-    if (!hint.empty()) msg += "; " + hint;
-    throw IOerror(msg, var.where, "$" + var.text);
+    else
+    {
+        std::string msg = "undefined macro '$" + var.text + "'";
+        const std::string hint = didYouMean(name, visibleKeywords(d));
+        if (!hint.empty()) msg += "; " + hint;
+        throw IOerror(msg, var.where, "$" + var.text);
+    }
+    for (auto& tok : t) tok.where = var.where;
+    return t;
 }
 
 
@@ -458,13 +481,12 @@ void dictionaryParser::substituteKeyword
     const token& var
 )
 {
-    const std::string name = variableName(var, d);
     token next;
     const bool more = lx.next(next);
     if (more && next.isPunct('{'))
     {
         // "$name { ... }": the keyword is the value of $name
-        const entry* e = d.findScoped(name);
+        const entry* e = d.findScoped(variableName(var, d), true);
         if (!e || e->isDict() || e->stream().empty())
         {
             throw IOerror("undefined macro '$" + var.text + "' used as a "
@@ -476,13 +498,22 @@ void dictionaryParser::substituteKeyword
     }
     if (more) lx.putBack(next);
 
-    const entry* e = d.findScoped(name);
+    // OpenFOAM ignores a bare "$name;" that names nothing (tutorials rely
+    // on it, e.g. "${_${FOAM_EXECUTABLE}};"): warn, do not stop
+    const entry* e = nullptr;
+    try
+    {
+        e = d.findScoped(variableName(var, d), true);
+    }
+    catch (const IOerror&)
+    {
+        e = nullptr;
+    }
     if (!e)
     {
-        std::string msg = "undefined macro '$" + var.text + "'";
-        const std::string hint = didYouMean(name, visibleKeywords(d));
-        if (!hint.empty()) msg += "; " + hint;
-        throw IOerror(msg, var.where, "$" + var.text);
+        std::cerr << "--> FOAM Warning: " << var.where.str() << ": '$"
+            << var.text << "' names no dictionary here: ignored\n";
+        return;
     }
     if (!e->isDict())
     {
@@ -495,7 +526,7 @@ void dictionaryParser::substituteKeyword
     const bool merge = mode_ == inputMode::merge || mode_ == inputMode::overwrite;
     for (const auto& sub : copy->entries())
     {
-        d.add(sub->clone(&d), merge);
+        addEntry(d, sub->clone(&d), merge ? inputMode::merge : mode_);
     }
 }
 
@@ -525,7 +556,7 @@ std::string dictionaryParser::expandString
             if (close != std::string::npos)
             {
                 const std::string tag = s.substr(i + 1, close - i - 1);
-                const fs::path caseDir = caseDirFor(where.fileName());
+                const fs::path& caseDir = caseDir_;
                 if (tag == "case") { out += caseDir.string(); i = close + 1; continue; }
                 if (tag == "system" || tag == "constant")
                 {
@@ -566,16 +597,16 @@ std::string dictionaryParser::expandString
         }
         else
         {
+            // Unbraced names stop at '/': "$FOAM_CASE/constant"
             std::size_t j = i + 1;
             while (j < s.size()
                 && (std::isalnum(static_cast<unsigned char>(s[j]))
-                    || s[j] == '_' || s[j] == '.' || s[j] == ':' || s[j] == '^'
-                    || s[j] == '/'))
+                    || s[j] == '_' || s[j] == '.' || s[j] == ':' || s[j] == '^'))
             {
                 ++j;
             }
-            // A trailing '/' or '.' belongs to the text, not the name
-            while (j > i + 1 && (s[j - 1] == '/' || s[j - 1] == '.')) --j;
+            // A trailing '.' belongs to the text, not the name
+            while (j > i + 1 && s[j - 1] == '.') --j;
             name = s.substr(i + 1, j - i - 1);
             i = j;
         }
@@ -584,11 +615,7 @@ std::string dictionaryParser::expandString
             out += '$';
             continue;
         }
-        if (name == "FOAM_CASE")
-        {
-            out += caseDirFor(where.fileName()).string();
-        }
-        else if (const entry* e = d.findScoped(name); e && !e->isDict())
+        if (const entry* e = d.findScoped(name); e && !e->isDict())
         {
             std::ostringstream os;
             for (std::size_t k = 0; k < e->stream().size(); ++k)
@@ -599,9 +626,9 @@ std::string dictionaryParser::expandString
             }
             out += os.str();
         }
-        else if (const char* env = std::getenv(name.c_str()))
+        else if (const auto env = environmentValue(name))
         {
-            out += env;
+            out += *env;
         }
         else
         {
@@ -658,10 +685,12 @@ void dictionaryParser::directive(dictionaryLexer& lx, dictionary& d, const token
         mode_ = modeFromWord(w);
         return;
     }
-    if (name == "#default" || name == "#overwrite" || name == "#warn" || name == "#error")
+    if (name == "#default" || name == "#overwrite" || name == "#warn"
+     || name == "#error" || name == "#merge")
     {
         oneShot_ = true;
         oneShotMode_ = name == "#default" ? inputMode::protect
+            : name == "#merge" ? inputMode::merge
             : name == "#overwrite" ? inputMode::overwrite
             : name == "#warn" ? inputMode::warn : inputMode::error;
         return;
@@ -776,7 +805,9 @@ void dictionaryParser::includeFile(dictionaryLexer& lx, dictionary& d, const tok
 {
     includedFile inc;
     if (!openInclude(lx, d, dir, inc)) return;
+    ++includeDepth_;
     parseSource(inc.text, inc.file, d);
+    --includeDepth_;
     includeStack_.pop_back();
 }
 
@@ -805,7 +836,11 @@ void dictionaryParser::includeTokens
         else if (t.isDirective())
         {
             if (isIncludeDirective(t.text)) includeTokens(sub, d, t, value);
-            else value.push_back(evaluate(sub, d, t));
+            else
+            {
+                const tokenList r = evaluate(sub, d, t);
+                value.insert(value.end(), r.begin(), r.end());
+            }
         }
         else
         {
@@ -995,7 +1030,7 @@ void dictionaryParser::removeEntries(dictionaryLexer& lx, dictionary& d, const t
 }
 
 
-token dictionaryParser::evaluate(dictionaryLexer& lx, const dictionary& d, const token& dir)
+tokenList dictionaryParser::evaluate(dictionaryLexer& lx, const dictionary& d, const token& dir)
 {
     if (dir.text == "#calc" || dir.text == "#codeStream")
     {
@@ -1046,7 +1081,7 @@ token dictionaryParser::evaluate(dictionaryLexer& lx, const dictionary& d, const
     }
 
     const std::string expanded = expandString(expr, d, arg.where);
-    double v = 0;
+    exprValue v;
     try
     {
         v = evaluateExpression(expanded);
@@ -1055,16 +1090,21 @@ token dictionaryParser::evaluate(dictionaryLexer& lx, const dictionary& d, const
     {
         throw IOerror(std::string("#eval: ") + err.what(), arg.where, dir.text);
     }
-    if (!std::isfinite(v))
+    auto number = [&](double x)
     {
-        throw IOerror("#eval \"" + expr + "\" is not a finite number", arg.where,
-            dir.text);
-    }
-    if (v == std::floor(v) && std::fabs(v) < 1e15)
-    {
-        return token::integerNumber(static_cast<long long>(v), dir.where);
-    }
-    return token::number(v, dir.where);
+        if (!std::isfinite(x))
+        {
+            throw IOerror("#eval \"" + expr + "\" is not a finite number",
+                arg.where, dir.text);
+        }
+        if (x == std::floor(x) && std::fabs(x) < 1e15)
+        {
+            return token::integerNumber(static_cast<long long>(x), dir.where);
+        }
+        return token::number(x, dir.where);
+    };
+    if (!v.isVector) return {number(v.v[0])};
+    return {token::punct('(', dir.where), number(v.v[0]), number(v.v[1]),
+            number(v.v[2]), token::punct(')', dir.where)};
 }
-
 } // End namespace nmm

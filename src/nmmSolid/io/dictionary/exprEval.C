@@ -15,6 +15,13 @@ namespace nmm
 namespace
 {
 
+exprValue scalarValue(double x)
+{
+    exprValue r;
+    r.v[0] = x;
+    return r;
+}
+
 class evaluator
 {
     std::string_view s_;
@@ -65,6 +72,38 @@ class evaluator
         }
     }
 
+    double scalar(const exprValue& a, const char* what)
+    {
+        if (a.isVector) fail(std::string(what) + " needs a scalar, not a vector");
+        return a.v[0];
+    }
+
+    exprValue combine(const exprValue& a, const exprValue& b, char op)
+    {
+        exprValue r;
+        if (op == '+' || op == '-')
+        {
+            if (a.isVector != b.isVector) fail("cannot add a scalar and a vector");
+            r.isVector = a.isVector;
+            for (int i = 0; i < 3; ++i) r.v[i] = op == '+' ? a.v[i] + b.v[i] : a.v[i] - b.v[i];
+            return r;
+        }
+        if (a.isVector && b.isVector) fail("cannot multiply or divide two vectors");
+        if (op == '/' && b.isVector) fail("cannot divide by a vector");
+        if (op == '%' && (a.isVector || b.isVector)) fail("'%' needs scalars");
+        const exprValue& vec = a.isVector ? a : b;
+        const double k = a.isVector ? b.v[0] : a.v[0];
+        r.isVector = a.isVector || b.isVector;
+        for (int i = 0; i < (r.isVector ? 3 : 1); ++i)
+        {
+            const double x = r.isVector ? vec.v[i] : a.v[0];
+            if (op == '*') r.v[i] = r.isVector ? x * k : a.v[0] * b.v[0];
+            else if (op == '/') r.v[i] = x / b.v[0];
+            else r.v[i] = std::fmod(a.v[0], b.v[0]);
+        }
+        return r;
+    }
+
     double number()
     {
         const std::string rest(s_.substr(pos_));
@@ -86,7 +125,28 @@ class evaluator
         return std::string(s_.substr(start, pos_ - start));
     }
 
-    double call(const std::string& name, const std::vector<double>& a)
+    exprValue call(const std::string& name, const std::vector<exprValue>& args)
+    {
+        if (name == "vector")
+        {
+            if (args.size() != 3) fail("vector() takes 3 components");
+            exprValue r;
+            r.isVector = true;
+            for (int i = 0; i < 3; ++i) r.v[i] = scalar(args[i], "vector()");
+            return r;
+        }
+        if ((name == "mag" || name == "magSqr") && args.size() == 1 && args[0].isVector)
+        {
+            const auto& v = args[0].v;
+            const double m2 = v[0]*v[0] + v[1]*v[1] + v[2]*v[2];
+            return scalarValue(name == "mag" ? std::sqrt(m2) : m2);
+        }
+        std::vector<double> a;
+        for (const auto& x : args) a.push_back(scalar(x, (name + "()").c_str()));
+        return scalarValue(callScalar(name, a));
+    }
+
+    double callScalar(const std::string& name, const std::vector<double>& a)
     {
         using f1 = double (*)(double);
         static const std::map<std::string, f1> one =
@@ -108,6 +168,7 @@ class evaluator
             {"mag", [](double x) { return std::fabs(x); }},
             {"abs", [](double x) { return std::fabs(x); }},
             {"sqr", [](double x) { return x * x; }},
+            {"magSqr", [](double x) { return x * x; }},
             {"floor", [](double x) { return std::floor(x); }},
             {"ceil", [](double x) { return std::ceil(x); }},
             {"round", [](double x) { return std::round(x); }},
@@ -140,10 +201,11 @@ class evaluator
             for (double v : a) r = (name == "min") ? std::min(r, v) : std::max(r, v);
             return r;
         }
-        fail("unknown function '" + name + "'");
+        fail("unknown function '" + name + "' (#eval evaluates scalar "
+            "expressions only)");
     }
 
-    double primary()
+    exprValue primary()
     {
         skip();
         if (pos_ >= s_.size()) fail("unexpected end of expression");
@@ -151,21 +213,21 @@ class evaluator
         if (c == '(')
         {
             ++pos_;
-            const double v = ternary();
+            const exprValue v = ternary();
             expect(')');
             return v;
         }
         if (std::isdigit(static_cast<unsigned char>(c)) || c == '.')
         {
-            return number();
+            return scalarValue(number());
         }
         if (std::isalpha(static_cast<unsigned char>(c)) || c == '_')
         {
             const std::string name = identifier();
-            if (name == "true") return 1;
-            if (name == "false") return 0;
+            if (name == "true") return scalarValue(1);
+            if (name == "false") return scalarValue(0);
             expect('(');
-            std::vector<double> args;
+            std::vector<exprValue> args;
             if (!accept(")"))
             {
                 do { args.push_back(ternary()); } while (accept(","));
@@ -176,89 +238,101 @@ class evaluator
         fail(std::string("unexpected '") + c + "'");
     }
 
-    double unary()
+    exprValue unary()
     {
         nesting guard(*this);
-        if (accept("-")) return -unary();
+        if (accept("-"))
+        {
+            exprValue v = unary();
+            for (double& x : v.v) x = -x;
+            return v;
+        }
         if (accept("+")) return unary();
-        if (accept("!")) return unary() == 0 ? 1 : 0;
+        if (accept("!")) return scalarValue(scalar(unary(), "'!'") == 0 ? 1 : 0);
         return primary();
     }
 
-    double product()
+    exprValue product()
     {
-        double v = unary();
+        exprValue v = unary();
         while (true)
         {
-            if (accept("*")) v *= unary();
-            else if (accept("/")) v /= unary();
-            else if (accept("%")) v = std::fmod(v, unary());
+            if (accept("*")) v = combine(v, unary(), '*');
+            else if (accept("/")) v = combine(v, unary(), '/');
+            else if (accept("%")) v = combine(v, unary(), '%');
             else return v;
         }
     }
 
-    double sum()
+    exprValue sum()
     {
-        double v = product();
+        exprValue v = product();
         while (true)
         {
-            if (accept("+")) v += product();
-            else if (accept("-")) v -= product();
+            if (accept("+")) v = combine(v, product(), '+');
+            else if (accept("-")) v = combine(v, product(), '-');
             else return v;
         }
     }
 
-    double comparison()
+    exprValue comparison()
     {
-        const double v = sum();
-        if (accept("<=")) return v <= sum();
-        if (accept(">=")) return v >= sum();
-        if (accept("==")) return v == sum();
-        if (accept("!=")) return v != sum();
-        if (accept("<")) return v < sum();
-        if (accept(">")) return v > sum();
-        return v;
+        const exprValue first = sum();
+        static const char* ops[] = {"<=", ">=", "==", "!=", "<", ">"};
+        for (const char* op : ops)
+        {
+            if (!accept(op)) continue;
+            const double a = scalar(first, "a comparison");
+            const double b = scalar(sum(), "a comparison");
+            const std::string o(op);
+            const bool r = o == "<=" ? a <= b : o == ">=" ? a >= b
+                : o == "==" ? a == b : o == "!=" ? a != b : o == "<" ? a < b : a > b;
+            return scalarValue(r ? 1 : 0);
+        }
+        return first;
     }
 
-    double conjunction()
+    exprValue conjunction()
     {
-        double v = comparison();
+        exprValue v = comparison();
         while (accept("&&"))
         {
-            const double r = comparison();
-            v = (v != 0 && r != 0) ? 1 : 0;
+            const bool l = scalar(v, "'&&'") != 0;
+            const bool r = scalar(comparison(), "'&&'") != 0;
+            v = scalarValue(l && r ? 1 : 0);
         }
         return v;
     }
 
-    double disjunction()
+    exprValue disjunction()
     {
-        double v = conjunction();
+        exprValue v = conjunction();
         while (accept("||"))
         {
-            const double r = conjunction();
-            v = (v != 0 || r != 0) ? 1 : 0;
+            const bool l = scalar(v, "'||'") != 0;
+            const bool r = scalar(conjunction(), "'||'") != 0;
+            v = scalarValue(l || r ? 1 : 0);
         }
         return v;
     }
 
-    double ternary()
+    exprValue ternary()
     {
         nesting guard(*this);
-        const double c = disjunction();
+        const exprValue c = disjunction();
         if (!accept("?")) return c;
-        const double a = ternary();
+        const exprValue a = ternary();
         expect(':');
-        const double b = ternary();
-        return c != 0 ? a : b;
+        const exprValue b = ternary();
+        return scalar(c, "'?:'") != 0 ? a : b;
     }
 
 public:
     explicit evaluator(std::string_view s) : s_(s) {}
 
-    double run()
+    exprValue run()
     {
-        const double v = ternary();
+        const exprValue v = ternary();
         skip();
         if (pos_ != s_.size()) fail("unexpected text");
         return v;
@@ -268,7 +342,7 @@ public:
 } // End anonymous namespace
 
 
-double evaluateExpression(std::string_view expression)
+exprValue evaluateExpression(std::string_view expression)
 {
     return evaluator(expression).run();
 }

@@ -87,8 +87,8 @@ void writeTokens(std::ostream& os, const tokenList& tokens)
         {
             const bool afterOpen =
                 prev->isPunct('(') || prev->isPunct('[') || prev->isPunct('{');
-            const bool beforeClose =
-                t.isPunct(')') || t.isPunct(']') || t.isPunct('}');
+            const bool beforeClose = t.isPunct(')') || t.isPunct(']')
+                || t.isPunct('}') || t.isPunct(';');
             const bool sizedList = prev->isInteger()
                 && (t.isPunct('(') || t.isPunct('{'));
             if (!afterOpen && !beforeClose && !sizedList) os << ' ';

@@ -63,7 +63,12 @@ void tokenReader::skipDimensions()
     }
     if (p < tokens_.size() && tokens_[p].isPunct('['))
     {
-        while (p < tokens_.size() && !tokens_[p].isPunct(']')) ++p;
+        // Unit names may end the set inside a word: [m^2/s^2] -> "s^2]"
+        auto closes = [](const token& t)
+        {
+            return t.isPunct(']') || (t.isWord() && t.text.back() == ']');
+        };
+        while (p < tokens_.size() && !closes(tokens_[p])) ++p;
         if (p == tokens_.size())
         {
             pos_ = tokens_.size();
