@@ -610,3 +610,41 @@ TEST(dictionary, listOfNamedDictionariesWithIncludes)
     const dictionary bad = parse("blocks ( a 1; );");
     EXPECT_THROW(dictionary::entryList(bad.lookupEntry("blocks")), IOerror);
 }
+
+
+// Inputs found by the fuzz target (tests/fuzz/dictionaryFuzz.C), kept as
+// regressions: each must end in a clean IOerror or read back identically
+TEST(dictionary, fuzzFindings)
+{
+    // A name longer than the system allows: an IOerror, not a filesystem
+    // exception
+    const std::string longName(5000, 'a');
+    EXPECT_THROW(parse("#includeEtc \"" + longName + "\"\n"), IOerror);
+    EXPECT_THROW(parse("#include \"" + longName + "\"\n"), IOerror);
+    EXPECT_THROW(parse("#includeFunc " + longName + "\n"), IOerror);
+
+    // Pattern keys that make a backtracking matcher take exponential time
+    const std::string name(40, 'a');
+    EXPECT_NO_THROW(parse("\"(a*)*b\" { x 1; }\n$" + name + ";\n"));
+    EXPECT_NO_THROW(parse("\"(a********************)\" 1;\n$y;\n"));
+    const dictionary d = parse("\"(a*)*b\" 1;");
+    EXPECT_EQ(d.findEntry(name), nullptr);
+    EXPECT_NE(d.findEntry(name + "b"), nullptr);
+    EXPECT_THROW(parse("\"(unclosed\" 1;").findEntry("x"), IOerror);
+
+    // A number cannot become a keyword through a macro
+    EXPECT_THROW(parse("E 4e8;\n$E { nu 0.3; }\n"), IOerror);
+    // Dictionary tokens loose in a value could never be written back
+    EXPECT_THROW(parse("d { a 1; }\nk $d x;\n"), IOerror);
+
+    // Written forms that must read back as the same tokens
+    for (const char* text :
+         {"t \"a\\\nb\";", "a [b ];", "c (a( );", "w (x(y ]);"})
+    {
+        const dictionary d1 = parse(text);
+        std::ostringstream os1, os2;
+        d1.write(os1);
+        parse(os1.str()).write(os2);
+        EXPECT_EQ(os1.str(), os2.str()) << text;
+    }
+}

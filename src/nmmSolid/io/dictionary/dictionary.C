@@ -495,21 +495,21 @@ void dictionary::writeFile
         << "  nmmSolid: Numerical Manifold Method for deformable geomaterials\n"
         << "\\*---------------------------------------------------------------------------*/\n";
     const entry* header = findEntry("FoamFile", false, false);
+    os << "FoamFile\n{\n";
     if (header && header->isDict())
     {
-        os << "FoamFile\n{\n";
         header->dict().write(os, 1);
-        os << "}\n";
     }
     else
     {
-        os  << "FoamFile\n{\n"
-            << "    version     2.0;\n"
-            << "    format      ascii;\n"
-            << "    class       " << className << ";\n";
-        if (!object.empty()) os << "    object      " << object << ";\n";
-        os  << "}\n";
+        dictionary made;
+        made.set("version", "2.0");
+        made.set("format", "ascii");
+        made.set("class", className);
+        if (!object.empty()) made.set("object", object);
+        made.write(os, 1);
     }
+    os << "}\n";
     os  << "// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //\n\n";
     for (const auto& e : entries_)
     {

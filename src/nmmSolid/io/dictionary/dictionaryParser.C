@@ -24,8 +24,11 @@ constexpr std::size_t maxIncludeDepth = 64;
 
 std::string readWholeFile(const fs::path& file, bool& ok)
 {
+    // No throwing std::filesystem calls on user-given names: a name too
+    // long for the system must be "cannot open", not an escaping exception
+    std::error_code ec;
     std::ifstream is(file, std::ios::binary);
-    ok = static_cast<bool>(is) && !fs::is_directory(file);
+    ok = static_cast<bool>(is) && !fs::is_directory(file, ec);
     if (!ok) return {};
     return std::string(std::istreambuf_iterator<char>(is), {});
 }
@@ -85,7 +88,8 @@ fs::path dictionaryParser::caseDirFor(const fs::path& file) const
     if (opts_.caseDir) return *opts_.caseDir;
     if (const char* c = std::getenv("FOAM_CASE"); c && *c) return c;
     // <case>/system/controlDict, <case>/constant/x, <case>/0/D
-    const fs::path dir = fs::absolute(file).parent_path();
+    std::error_code ec;
+    const fs::path dir = fs::absolute(file, ec).parent_path();
     const std::string leaf = dir.filename().string();
     const bool timeDir = !leaf.empty()
         && (std::isdigit(static_cast<unsigned char>(leaf[0])) != 0);
@@ -348,6 +352,19 @@ tokenList dictionaryParser::readValue
         }
         else if (opts_.expand && t.isVariable())
         {
+            if (open.empty())
+            {
+                // Bare entries ("a 1; b 2;") in a value could never be
+                // written back; inside ( ) or { } they are list items
+                const entry* e = d.findScoped(variableName(t, d));
+                if (e && e->isDict())
+                {
+                    throw IOerror("'$" + t.text + "' names a dictionary: in a "
+                        "value it may only stand inside ( ) or { }; to copy "
+                        "the dictionary write '" + key.text + " $" + t.text + ";'",
+                        t.where, key.text);
+                }
+            }
             tokenList sub = expandVariable(t, d);
             value.insert(value.end(), std::make_move_iterator(sub.begin()),
                 std::make_move_iterator(sub.end()));
@@ -493,6 +510,12 @@ void dictionaryParser::substituteKeyword
                 "keyword", var.where, "$" + var.text);
         }
         const token& k = e->stream().front();
+        if (!k.isStringOrWord())
+        {
+            throw IOerror("'$" + var.text + "' used as a keyword holds "
+                + k.describe() + "; a keyword must be a word or a string",
+                var.where, "$" + var.text);
+        }
         parseDictEntry(lx, d, k.text, k.isString(), var, next, takeMode());
         return;
     }
@@ -745,7 +768,8 @@ bool dictionaryParser::openInclude
     {
         for (const auto& dirPath : etcDirs_)
         {
-            if (fs::is_regular_file(dirPath / expanded))
+            std::error_code ec;
+            if (fs::is_regular_file(dirPath / expanded, ec))
             {
                 target = dirPath / expanded;
                 break;
@@ -936,7 +960,8 @@ void dictionaryParser::includeFunc(dictionaryLexer& lx, dictionary& d, const tok
 
     // The case's system/ first, then etc/caseDicts/postProcessing
     fs::path file = caseDirFor(arg.where.fileName()) / "system" / call.name;
-    if (!fs::is_regular_file(file))
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec))
     {
         file.clear();
         for (const auto& etc : etcDirs_)

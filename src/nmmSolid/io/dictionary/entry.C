@@ -85,24 +85,17 @@ bool entry::matches(const std::string& key) const
     if (!isPattern()) return key == keyword_;
     if (!regex_)
     {
-        std::string expr = keyword_;
-        auto flags = std::regex::extended;
-        if (expr.rfind("(?i)", 0) == 0)
-        {
-            expr.erase(0, 4);
-            flags |= std::regex::icase;
-        }
         try
         {
-            regex_ = std::make_shared<const std::regex>(expr, flags);
+            regex_ = std::make_shared<const keyPattern>(keyword_);
         }
-        catch (const std::regex_error& err)
+        catch (const std::invalid_argument& err)
         {
             throw error("invalid regular expression \"" + keyword_ + "\": "
                 + err.what());
         }
     }
-    return std::regex_match(key, *regex_);
+    return regex_->matches(key);
 }
 
 

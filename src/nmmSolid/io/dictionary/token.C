@@ -38,10 +38,11 @@ std::string token::str() const
     {
         case kind::string:
         {
+            // A line break is written escaped: the reader keeps it
             std::string s = "\"";
             for (char c : text)
             {
-                if (c == '"') s += '\\';
+                if (c == '"' || c == '\n') s += '\\';
                 s += c;
             }
             return s + '"';
@@ -76,6 +77,28 @@ std::ostream& operator<<(std::ostream& os, const token& t)
 }
 
 
+namespace
+{
+
+// A word read back would swallow a ']' (valid inside words) or a ')' that
+// closes one of its own unbalanced '('
+bool wordWouldAbsorb(const token& prev, const token& next)
+{
+    if (!prev.isWord()) return false;
+    if (next.isPunct(']')) return true;
+    if (!next.isPunct(')')) return false;
+    int depth = 0;
+    for (char c : prev.text)
+    {
+        if (c == '(') ++depth;
+        else if (c == ')' && depth > 0) --depth;
+    }
+    return depth > 0;
+}
+
+} // End anonymous namespace
+
+
 void writeTokens(std::ostream& os, const tokenList& tokens)
 {
     // No space after an opening bracket or before a closing one, and none
@@ -87,8 +110,8 @@ void writeTokens(std::ostream& os, const tokenList& tokens)
         {
             const bool afterOpen =
                 prev->isPunct('(') || prev->isPunct('[') || prev->isPunct('{');
-            const bool beforeClose = t.isPunct(')') || t.isPunct(']')
-                || t.isPunct('}') || t.isPunct(';');
+            const bool beforeClose = (t.isPunct(')') || t.isPunct(']')
+                || t.isPunct('}') || t.isPunct(';')) && !wordWouldAbsorb(*prev, t);
             const bool sizedList = prev->isInteger()
                 && (t.isPunct('(') || t.isPunct('{'));
             if (!afterOpen && !beforeClose && !sizedList) os << ' ';
