@@ -404,6 +404,10 @@ void dictionaryParser::addEntry
     // included files and of sub-dictionaries are dropped
     if (e->keyword() == "FoamFile" && (d.parent() || includeDepth_ > 0)) return;
 
+    // A bad pattern keyword is reported where it is written, not at some
+    // later look-up
+    if (e->isPattern()) e->matches(std::string());
+
 
     const entry* existing = d.findEntry(e->keyword(), false, false);
     switch (mode)
