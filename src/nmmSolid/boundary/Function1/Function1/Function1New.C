@@ -1,0 +1,229 @@
+#include "nmmSolid/boundary/Function1/Function1/Function1.H"
+
+#include "nmmSolid/boundary/Function1/constant/constant.H"
+#include "nmmSolid/boundary/Function1/linearRamp/linearRamp.H"
+#include "nmmSolid/boundary/Function1/polynomial/polynomial.H"
+#include "nmmSolid/boundary/Function1/sine/sine.H"
+#include "nmmSolid/boundary/Function1/table/table.H"
+
+namespace nmm
+{
+
+namespace
+{
+
+using namespace Function1Types;
+
+template<class Type>
+using factory = typename Function1<Type>::selector::factory;
+
+
+//- A type with an inline form ("pressure table (...);") and a dictionary form
+template<template<class> class F, class Type>
+factory<Type> inlineOrDictionary()
+{
+    return [](const std::string& name, const dictionary* coeffs, tokenReader* in)
+        -> std::unique_ptr<Function1<Type>>
+    {
+        if (in) return std::make_unique<F<Type>>(name, *in);
+        return std::make_unique<F<Type>>(name, *coeffs);
+    };
+}
+
+
+//- A type read from a dictionary only
+template<class Type, class Make>
+factory<Type> dictionaryOnly(const std::string& typeName, Make make)
+{
+    return [typeName, make]
+    (
+        const std::string& name,
+        const dictionary* coeffs,
+        tokenReader* in
+    ) -> std::unique_ptr<Function1<Type>>
+    {
+        if (in)
+        {
+            throw in->error(typeName + " '" + name + "' has no inline form;"
+                " write " + name + " { type " + typeName + "; ... }");
+        }
+        return make(name, *coeffs);
+    };
+}
+
+
+template<class Type>
+bool addTypes()
+{
+    using selector = typename Function1<Type>::selector;
+    using wave = typename sine<Type>::wave;
+
+    selector::add("constant", inlineOrDictionary<constant, Type>(),
+        &constant<Type>::keywords());
+    selector::add("uniform", inlineOrDictionary<constant, Type>(),
+        &constant<Type>::keywords());
+    selector::add("table", inlineOrDictionary<table, Type>(),
+        &table<Type>::keywords());
+    selector::add("polynomial", inlineOrDictionary<polynomial, Type>(),
+        &polynomial<Type>::keywords());
+    selector::add("linearRamp", dictionaryOnly<Type>("linearRamp",
+        [](const std::string& name, const dictionary& d)
+        {
+            return std::make_unique<linearRamp<Type>>(name, d);
+        }),
+        &linearRamp<Type>::keywords());
+    selector::add("sine", dictionaryOnly<Type>("sine",
+        [](const std::string& name, const dictionary& d)
+        {
+            return std::make_unique<sine<Type>>(name, wave::sine, d);
+        }),
+        &sine<Type>::keywords());
+    selector::add("cosine", dictionaryOnly<Type>("cosine",
+        [](const std::string& name, const dictionary& d)
+        {
+            return std::make_unique<sine<Type>>(name, wave::cosine, d);
+        }),
+        &sine<Type>::cosineKeywords());
+    return true;
+}
+
+
+//- The types are added here, next to New(), rather than each in its own
+//  file: the library is static, and a linker keeps only the object files
+//  a program refers to, so self-registering files would be dropped
+template<class Type>
+void registerTypes()
+{
+    static const bool added = addTypes<Type>();
+    (void)added;
+}
+
+// Also at start-up, so that a type listing sees them before any New()
+[[maybe_unused]] const bool scalarsAdded = (registerTypes<double>(), true);
+[[maybe_unused]] const bool vectorsAdded = (registerTypes<Eigen::Vector2d>(), true);
+
+
+template<class Type>
+std::string validTypes()
+{
+    std::string s;
+    for (const auto& n : Function1<Type>::selector::names()) s += " " + n;
+    return s;
+}
+
+
+//- "pressure { type sine; ... }"
+template<class Type>
+std::unique_ptr<Function1<Type>> fromDictionary
+(
+    const std::string& key,
+    const entry& e
+)
+{
+    const dictionary& coeffs = e.dict();
+    const entry* typeEntry = coeffs.findEntry("type");
+    if (!typeEntry)
+    {
+        throw IOerror("Function1 '" + key + "' is a dictionary without"
+            " 'type'; valid types:" + validTypes<Type>(), e.where(), key);
+    }
+    const auto typeName = dictionary::readEntryValue<std::string>(*typeEntry);
+    return Function1<Type>::selector::New
+    (
+        typeName, coeffs, key, &coeffs, nullptr
+    );
+}
+
+
+//- "pressure 4.2e5;", "pressure table (...);", "pressure sine;" with
+//  "pressureCoeffs { ... }"
+template<class Type>
+std::unique_ptr<Function1<Type>> fromTokens
+(
+    const std::string& key,
+    const entry& e,
+    const dictionary& dict
+)
+{
+    using selector = typename Function1<Type>::selector;
+
+    tokenReader r(e.stream(), &e);
+    if (r.atEnd())
+    {
+        throw e.error("expected a " + std::string(function1Traits<Type>::name)
+            + " or a Function1 type; valid types:" + validTypes<Type>());
+    }
+
+    // A bare value is a constant, as in OpenFOAM
+    if (!r.peek().isWord())
+    {
+        auto f = std::make_unique<constant<Type>>(key, r);
+        r.expectEnd();
+        return f;
+    }
+
+    const std::string typeName = r.next().text;
+    if (!r.atEnd())
+    {
+        auto f = selector::New(typeName, dict, key, nullptr, &r, key);
+        r.expectEnd();
+        return f;
+    }
+
+    const dictionary* coeffs = dict.findDict(key + "Coeffs");
+    if (!coeffs && selector::find(typeName))
+    {
+        const bool hasInline = typeName == "constant" || typeName == "uniform"
+            || typeName == "table" || typeName == "polynomial";
+        throw e.error("'" + key + " " + typeName + ";' gives no "
+            + (hasInline ? "value or " : "") + "coefficients; write "
+            + (hasInline ? key + " " + typeName + " <value>; or " : "")
+            + key + " { type " + typeName + "; ... }");
+    }
+    return selector::New(typeName, dict, key, coeffs, nullptr, key);
+}
+
+} // End anonymous namespace
+
+
+template<class Type>
+std::unique_ptr<Function1<Type>> Function1<Type>::New
+(
+    const std::string& keyword,
+    const dictionary& dict
+)
+{
+    registerTypes<Type>();
+    // keyword, not e.keyword(): the entry may be a pattern that matched it
+    const entry& e = dict.lookupEntry(keyword);
+    std::unique_ptr<Function1> f = e.isDict()
+        ? fromDictionary<Type>(keyword, e)
+        : fromTokens<Type>(keyword, e, dict);
+    f->where_ = e.where();
+    return f;
+}
+
+
+template<class Type>
+std::unique_ptr<Function1<Type>> Function1<Type>::NewIfPresent
+(
+    const std::string& keyword,
+    const dictionary& dict
+)
+{
+    return dict.findEntry(keyword) ? New(keyword, dict) : nullptr;
+}
+
+
+template<class Type>
+std::vector<std::string> Function1<Type>::types()
+{
+    registerTypes<Type>();
+    return selector::names();
+}
+
+
+template class Function1<double>;
+template class Function1<Eigen::Vector2d>;
+
+} // End namespace nmm
