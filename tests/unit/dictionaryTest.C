@@ -460,7 +460,7 @@ TEST(dictionary, syntaxErrorsNameLineAndColumn)
         {"a \"abc\n\";\n", "unterminated string", 1, 3},
         {"a 1;\n/* open\n", "unterminated comment", 2, 1},
         {"a 1.2.3;\n", "bad number", 1, 3},
-        {"a 1;\nb { c 2 }\n", "missing ';'", 2, 9},
+        {"a 1;\nb { c 2 }\n", "missing ';'", 2, 8},   // just after "2"
         {"a (1 2);\nb (3 4};\n", "does not match", 2, 7},
         // Square brackets are not balanced in values (unit names end in a
         // word: [m^2/s]), so a stray ']' leaves the '(' open

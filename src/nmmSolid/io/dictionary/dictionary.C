@@ -1,4 +1,5 @@
 #include "nmmSolid/io/dictionary/dictionary.H"
+#include "nmmSolid/io/dictionary/dictionaryLexer.H"
 #include "nmmSolid/io/dictionary/dictionaryParser.H"
 
 #include <algorithm>
@@ -396,9 +397,53 @@ entry* dictionary::add(std::unique_ptr<entry> e, bool merge)
 
 entry* dictionary::set(const std::string& key, const std::string& valueText)
 {
-    dictionary tmp = parse(key + " " + valueText + ";", "<set " + key + ">");
-    auto e = tmp.entries_.front()->clone(this);
-    return add(std::move(e), false);
+    const std::string origin = "<value of " + key + ">";
+    // A keyword must read back as itself: one word token
+    bool readsBack = false;
+    try
+    {
+        const tokenList k = tokenize(key, origin);
+        readsBack = k.size() == 1 && k[0].isWord() && k[0].text == key
+            && k[0].text[0] != '#';
+    }
+    catch (const IOerror&)
+    {
+        readsBack = false;
+    }
+    const bool control = std::any_of(key.begin(), key.end(), [](char c)
+        { return static_cast<unsigned char>(c) < 32 || c == 127; });
+    if (!readsBack || control)
+    {
+        throw IOerror("'" + key + "' cannot be a keyword", where_, key);
+    }
+    tokenList tokens = tokenize(valueText, origin);
+    const bool isDictValue = tokens.size() >= 2 && tokens.front().isPunct('{')
+        && tokens.back().isPunct('}');
+    if (isDictValue)
+    {
+        auto sub = dictionaryParser().parseTokens(
+            tokenList(tokens.begin() + 1, tokens.end() - 1), origin).clone();
+        return add(std::make_unique<entry>(key, std::move(sub), where_), false);
+    }
+    // A value is one statement: a ';' outside brackets would end it early
+    int depth = 0;
+    for (const token& t : tokens)
+    {
+        if (t.isPunct('(') || t.isPunct('{')) ++depth;
+        else if (t.isPunct(')') || t.isPunct('}')) --depth;
+        else if (t.isPunct(';') && depth == 0)
+        {
+            throw IOerror("the value \"" + valueText + "\" of '" + key
+                + "' holds a ';'", t.where, key);
+        }
+        if (depth < 0) break;
+    }
+    if (depth != 0)
+    {
+        throw IOerror("the value \"" + valueText + "\" of '" + key
+            + "' has unbalanced brackets", where_, key);
+    }
+    return add(std::make_unique<entry>(key, std::move(tokens), where_), false);
 }
 
 

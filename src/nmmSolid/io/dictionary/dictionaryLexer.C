@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
@@ -279,8 +280,12 @@ void dictionaryLexer::readWord(token& t)
     readWordTail(t.text);
     if (t.text.empty())
     {
-        const char c = peekChar();
-        throw IOerror(std::string("unexpected character '") + c + "'", t.where);
+        // Show control bytes readably: a binary file is a common mistake
+        const unsigned char c = static_cast<unsigned char>(peekChar());
+        char shown[8];
+        std::snprintf(shown, sizeof(shown), (c < 32 || c == 127) ? "\\x%02x" : "%c", c);
+        throw IOerror(std::string("unexpected character '") + shown + "'"
+            + ((c < 32 || c == 127) ? " (is this a text file?)" : ""), t.where);
     }
 }
 

@@ -108,7 +108,10 @@ dictionary dictionaryParser::parseFile(const fs::path& file)
     const std::string* name = internFileName(file.string());
     if (!ok)
     {
-        throw IOerror("cannot open file " + file.string(), {name, 0, 0});
+        std::error_code ec;
+        throw IOerror(fs::is_directory(file, ec)
+            ? file.string() + " is a directory, not a dictionary file"
+            : "cannot open file " + file.string(), {name, 0, 0});
     }
     dictionary d(file.string());
     d.where_ = {name, 1, 1};
@@ -334,9 +337,17 @@ tokenList dictionaryParser::readValue
             {
                 if (t.isPunct('}'))
                 {
+                    if (value.empty())
+                    {
+                        throw IOerror("keyword '" + key.text + "' has no value "
+                            "(found '}')", key.where, key.text);
+                    }
+                    // Where the ';' belongs: right after the value
+                    sourcePosition after = value.back().where;
+                    after.column += int(value.back().str().size());
                     throw IOerror("missing ';' at the end of entry '" + key.text
-                        + "' (entry starts at line " + std::to_string(key.where.line)
-                        + "; found '}')", t.where, key.text);
+                        + "' (found '}' at line " + std::to_string(t.where.line)
+                        + ")", after, key.text);
                 }
                 throw IOerror("unbalanced '" + t.text + "' in the value of "
                     "keyword '" + key.text + "': no matching '"
@@ -372,7 +383,12 @@ tokenList dictionaryParser::readValue
         }
         else if (opts_.expand && t.isDirective())
         {
-            if (isIncludeDirective(t.text)) includeTokens(lx, d, t, value);
+            if (isIncludeDirective(t.text))
+            {
+                const std::size_t first = value.size();
+                includeTokens(lx, d, t, value);
+                if (open.empty()) rejectLooseEntries(value, first, t, key);
+            }
             else
             {
                 const tokenList r = evaluate(lx, d, t);
@@ -381,6 +397,33 @@ tokenList dictionaryParser::readValue
             continue;
         }
         value.push_back(std::move(t));
+    }
+}
+
+
+void dictionaryParser::rejectLooseEntries
+(
+    const tokenList& value,
+    std::size_t first,
+    const token& dir,
+    const token& key
+) const
+{
+    // Entries ("a 1; b 2;") spliced loose into a value could never be
+    // written back; inside ( ) or { } they are list items
+    int depth = 0;
+    for (std::size_t i = first; i < value.size(); ++i)
+    {
+        const token& t = value[i];
+        if (t.isPunct('(') || t.isPunct('{')) ++depth;
+        else if (t.isPunct(')') || t.isPunct('}')) --depth;
+        else if (t.isPunct(';') && depth <= 0)
+        {
+            throw IOerror("the file included by " + dir.text + " holds entries "
+                "(found ';' at " + t.where.str() + "): inside the value of '"
+                + key.text + "' include it only within ( ) or { }", dir.where,
+                key.text);
+        }
     }
 }
 
@@ -994,9 +1037,38 @@ void dictionaryParser::includeFunc(dictionaryLexer& lx, dictionary& d, const tok
         for (const auto& w : words) s += " " + w;
         return s + " )";
     };
-    if (call.args.size() == 1) func->set("field", call.args[0]);
-    if (!call.args.empty()) func->set("fields", wordList(call.args));
-    for (const auto& [key, value] : call.named) func->set(key, value);
+    // Arguments are plain values: a directive or macro in one would be
+    // read again (and differently) when the result is written out
+    for (const auto& kv : call.named)
+    {
+        if (kv.first == "FoamFile")
+        {
+            throw IOerror("#includeFunc " + arg.text + ": 'FoamFile' is a "
+                "file header, not an argument", arg.where, dir.text);
+        }
+    }
+    std::vector<std::string> values = call.args;
+    for (const auto& kv : call.named) values.push_back(kv.second);
+    for (const auto& value : values)
+    {
+        if (value.find_first_of("#$") != std::string::npos)
+        {
+            throw IOerror("#includeFunc " + arg.text + ": argument '" + value
+                + "' holds a directive or macro; give a plain value",
+                arg.where, dir.text);
+        }
+    }
+    try
+    {
+        if (call.args.size() == 1) func->set("field", call.args[0]);
+        if (!call.args.empty()) func->set("fields", wordList(call.args));
+        for (const auto& [key, value] : call.named) func->set(key, value);
+    }
+    catch (const IOerror& err)
+    {
+        throw IOerror("#includeFunc " + arg.text + ": bad argument: "
+            + err.message(), arg.where, dir.text);
+    }
 
     // The keyword is the call with the characters a word may not hold removed
     std::string keyword;
@@ -1123,8 +1195,9 @@ tokenList dictionaryParser::evaluate(dictionaryLexer& lx, const dictionary& d, c
     {
         if (!std::isfinite(x))
         {
-            throw IOerror("#eval \"" + expr + "\" is not a finite number",
-                arg.where, dir.text);
+            throw IOerror("#eval \"" + expr + "\" (expanded: \"" + expanded
+                + "\") is not a finite number: a division by zero or a value "
+                "out of range", arg.where, dir.text);
         }
         if (x == std::floor(x) && std::fabs(x) < 1e15)
         {

@@ -223,6 +223,7 @@ class evaluator
         }
         if (std::isalpha(static_cast<unsigned char>(c)) || c == '_')
         {
+            const std::size_t nameStart = pos_;
             const std::string name = identifier();
             if (name == "true") return scalarValue(1);
             if (name == "false") return scalarValue(0);
@@ -233,7 +234,12 @@ class evaluator
                 do { args.push_back(ternary()); } while (accept(","));
                 expect(')');
             }
-            return call(name, args);
+            // Errors about the call point at its name
+            const std::size_t end = pos_;
+            pos_ = nameStart;
+            exprValue r = call(name, args);
+            pos_ = end;
+            return r;
         }
         fail(std::string("unexpected '") + c + "'");
     }
