@@ -189,3 +189,16 @@ TEST(runTimeSelection, unknownTypeListsValidOnes)
         EXPECT_EQ(err.where().line, 2);
     }
 }
+
+
+TEST(keywordTable, variablesUsedByMacrosAreNotUnknownKeywords)
+{
+    // As in OpenFOAM cases: helper values defined at the top and used as
+    // $macros are the user's variables
+    const dictionary d = dictionary::parse(
+        "Emod 4e8;\nbase { nu 0.3; }\ntype linearElastic;\nE $Emod;\n$base;\n", "m");
+    EXPECT_NO_THROW(elasticKeywords().validate(d));
+    // ... but a misspelt keyword that nothing refers to is still an error
+    const IOerror err = validationError("type t; E 1; nu 0.3; rhoo 1;");
+    EXPECT_NE(err.message().find("did you mean 'rho'"), std::string::npos);
+}

@@ -245,6 +245,7 @@ void dictionaryParser::parseEntry
             const entry* e = d.findScoped(variableName(t, d));
             if (e && e->isDict())
             {
+                e->markUsedAsMacro();
                 addEntry(d, std::make_unique<entry>(key.text, e->dict().clone(),
                     key.where, key.isString()), mode);
                 return;
@@ -515,6 +516,7 @@ tokenList dictionaryParser::expandVariable(const token& var, const dictionary& d
     tokenList t;
     if (const entry* e = d.findScoped(name))
     {
+        e->markUsedAsMacro();
         if (!e->isDict()) return e->stream();
         // A dictionary inside a value gives its entries' tokens, without
         // braces, as in OpenFOAM ("( { $base; name a; } )")
@@ -556,6 +558,7 @@ void dictionaryParser::substituteKeyword
             throw IOerror("undefined macro '$" + var.text + "' used as a "
                 "keyword", var.where, "$" + var.text);
         }
+        e->markUsedAsMacro();
         const token& k = e->stream().front();
         if (!k.isStringOrWord())
         {
@@ -591,6 +594,7 @@ void dictionaryParser::substituteKeyword
             "so it must name a dictionary, but it names a value", var.where,
             "$" + var.text);
     }
+    e->markUsedAsMacro();
     // Copy first: the source may be d itself or one of its parents
     const auto copy = e->dict().clone();
     const bool merge = mode_ == inputMode::merge || mode_ == inputMode::overwrite;
@@ -687,6 +691,7 @@ std::string dictionaryParser::expandString
         }
         if (const entry* e = d.findScoped(name); e && !e->isDict())
         {
+            e->markUsedAsMacro();
             std::ostringstream os;
             for (std::size_t k = 0; k < e->stream().size(); ++k)
             {

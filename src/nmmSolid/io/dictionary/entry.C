@@ -62,6 +62,7 @@ std::unique_ptr<entry> entry::clone(dictionary* parent) const
         e = std::make_unique<entry>(keyword_, stream_, where_, quoted_);
     }
     e->regex_ = regex_;
+    e->usedAsMacro_ = usedAsMacro_;
     return e;
 }
 

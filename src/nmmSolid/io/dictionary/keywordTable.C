@@ -258,7 +258,7 @@ void keywordTable::validate(const dictionary& dict) const
         const keyword* k = find(e->keyword());
         if (!k)
         {
-            if (openEnded_) continue;
+            if (openEnded_ || e->usedAsMacro()) continue;
             std::string msg = "Unknown keyword '" + e->keyword() + "' in "
                 + owner_;
             const std::string hint = didYouMean(e->keyword(), names);
