@@ -4,6 +4,7 @@
 
 #include "nmmSolid/io/dictionary/dictionary.H"
 #include "nmmSolid/io/dictionary/dictionaryLexer.H"
+#include "testTools.H"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 
 using nmm::dictionary;
 using nmm::IOerror;
+using nmm::test::tempDir;
 
 namespace
 {
@@ -38,27 +40,6 @@ IOerror errorOf(const std::string& text)
     ADD_FAILURE() << "no error for:\n" << text;
     return IOerror("none");
 }
-
-struct tempDir
-{
-    std::filesystem::path path;
-    tempDir()
-    {
-        path = std::filesystem::temp_directory_path()
-            / ("nmmDictTest_" + std::to_string(::getpid()) + "_"
-               + std::to_string(counter()++));
-        std::filesystem::create_directories(path);
-    }
-    ~tempDir() { std::filesystem::remove_all(path); }
-    static int& counter() { static int c = 0; return c; }
-    std::filesystem::path write(const std::string& name, const std::string& text) const
-    {
-        const auto p = path / name;
-        std::filesystem::create_directories(p.parent_path());
-        std::ofstream(p) << text;
-        return p;
-    }
-};
 
 } // End anonymous namespace
 
@@ -253,7 +234,7 @@ TEST(dictionary, macros)
 
 TEST(dictionary, headersOfIncludedFilesAndSubDictionariesAreDropped)
 {
-    tempDir dir;
+    tempDir dir("nmmDictTest");
     dir.write("inc", "FoamFile { version 2.0; object inc; }\nx 1;\n");
     const auto top = dir.write("top",
         "FoamFile { version 2.0; object top; }\n#include \"inc\"\n"
@@ -311,7 +292,7 @@ TEST(dictionary, regexKeysExactFirstThenPatternsLastFirst)
 
 TEST(dictionary, includeChainAndOptionalIncludes)
 {
-    tempDir dir;
+    tempDir dir("nmmDictTest");
     dir.write("sub/second", "b 2;\n#include \"third\"\n");
     dir.write("sub/third", "c $a;\n");
     const auto top = dir.write("top",
@@ -328,7 +309,7 @@ TEST(dictionary, includeChainAndOptionalIncludes)
 
 TEST(dictionary, includeErrors)
 {
-    tempDir dir;
+    tempDir dir("nmmDictTest");
     const auto missing = dir.write("missing", "#include \"nothere\"\n");
     try
     {
@@ -356,7 +337,7 @@ TEST(dictionary, includeErrors)
 
 TEST(dictionary, includeEtcSearchesEtcDirs)
 {
-    tempDir dir;
+    tempDir dir("nmmDictTest");
     dir.write("etc/caseDicts/common", "shared 42;\n");
     const auto top = dir.write("case/system/dict", "#includeEtc \"caseDicts/common\"\n");
     nmm::readOptions opts;
@@ -583,7 +564,7 @@ TEST(dictionary, deepNestingFailsCleanly)
 
 TEST(dictionary, listOfNamedDictionariesWithIncludes)
 {
-    tempDir dir;
+    tempDir dir("nmmDictTest");
     dir.write("constant/geometry/grains",
         "grain1 { material quartz; polygon ((0 0) (1 0) (0 1)); }\n"
         "grain2 { material quartz; polygon ((1 0) (1 1) (0 1)); }\n");

@@ -4,6 +4,7 @@
 #include "nmmSolid/boundary/Function1/Function1/Function1.H"
 #include "nmmSolid/boundary/Function1/sine/sine.H"
 #include "nmmSolid/boundary/Function1/table/table.H"
+#include "testTools.H"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -44,22 +45,6 @@ IOerror errorOf(const std::string& text, const std::string& key = "f")
         return err;
     }
     ADD_FAILURE() << "no error for:\n" << text;
-    return IOerror("none");
-}
-
-// The IOerror of a call (fails the test if none)
-template<class Call>
-IOerror errorOfCall(Call call)
-{
-    try
-    {
-        call();
-    }
-    catch (const IOerror& err)
-    {
-        return err;
-    }
-    ADD_FAILURE() << "no error";
     return IOerror("none");
 }
 
@@ -187,15 +172,15 @@ TEST(Function1Table, outOfBoundsError)
     EXPECT_EQ(f->integral(0, 1), 1.5);
     for (double t : {-0.1, 1.1})
     {
-        const IOerror err = errorOfCall([&] { f->value(t); });
+        const IOerror err = nmm::test::errorOf([&] { f->value(t); });
         EXPECT_THAT(err.message(), HasSubstr("table 'f'"));
         EXPECT_THAT(err.message(), HasSubstr("(outOfBounds error)"));
         EXPECT_EQ(err.keyword(), "f");
         EXPECT_EQ(err.where().line, 1);
     }
-    EXPECT_THAT(errorOfCall([&] { f->value(-0.1); }).message(),
+    EXPECT_THAT(nmm::test::errorOf([&] { f->value(-0.1); }).message(),
         HasSubstr("time -0.1 is before the first time 0"));
-    EXPECT_THAT(errorOfCall([&] { f->integral(0.5, 2); }).message(),
+    EXPECT_THAT(nmm::test::errorOf([&] { f->integral(0.5, 2); }).message(),
         HasSubstr("time 2 is after the last time 1"));
 }
 
@@ -426,12 +411,12 @@ TEST(Function1Polynomial, valueAndIntegral)
 TEST(Function1Polynomial, valuesThatAreNotRealNumbersAreErrors)
 {
     const auto f = read("f polynomial ((1 -1));");
-    EXPECT_THAT(errorOfCall([&] { f->value(0); }).message(), HasSubstr("infinite at t = 0"));
-    EXPECT_THAT(errorOfCall([&] { f->integral(-1, 1); }).message(),
+    EXPECT_THAT(nmm::test::errorOf([&] { f->value(0); }).message(), HasSubstr("infinite at t = 0"));
+    EXPECT_THAT(nmm::test::errorOf([&] { f->integral(-1, 1); }).message(),
         HasSubstr("t = 0 is inside"));
     EXPECT_DOUBLE_EQ(f->integral(-2, -1), std::log(0.5));
     const auto g = read("f polynomial ((1 0.5));");
-    EXPECT_THAT(errorOfCall([&] { g->value(-1); }).message(), HasSubstr("not a real number"));
+    EXPECT_THAT(nmm::test::errorOf([&] { g->value(-1); }).message(), HasSubstr("not a real number"));
 }
 
 

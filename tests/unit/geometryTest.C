@@ -5,6 +5,7 @@
 
 #include "nmmSolid/geometry/blockGeometry/blockGeometry.H"
 #include "nmmSolid/geometry/patchSelectors/patchSelector/patchSelector.H"
+#include "testTools.H"
 
 #include "../geometry/grainTiling.H"
 
@@ -19,6 +20,7 @@ using nmm::blockGeometry;
 using nmm::boundaryEdge;
 using nmm::dictionary;
 using nmm::IOerror;
+using nmm::test::tempDir;
 using nmm::jointFace;
 using nmm::jointSide;
 
@@ -29,27 +31,6 @@ blockGeometry readText(const std::string& text)
 {
     return blockGeometry::read(dictionary::parse(text, "nmmMeshDict"));
 }
-
-struct tempDir
-{
-    std::filesystem::path path;
-    tempDir()
-    {
-        path = std::filesystem::temp_directory_path()
-            / ("nmmGeometryTest_" + std::to_string(::getpid()) + "_"
-               + std::to_string(counter()++));
-        std::filesystem::create_directories(path);
-    }
-    ~tempDir() { std::filesystem::remove_all(path); }
-    static int& counter() { static int c = 0; return c; }
-    std::filesystem::path write(const std::string& name, const std::string& text) const
-    {
-        const auto p = path / name;
-        std::filesystem::create_directories(p.parent_path());
-        std::ofstream(p) << text;
-        return p;
-    }
-};
 
 // Two unit squares, 'lower' on [0,1]x[0,1] given counter-clockwise and
 // 'upper' on [0,1]x[1,2] given clockwise, sharing the edge y = 1. upper
@@ -164,7 +145,7 @@ TEST(geometry, collinearVerticesOnAStraightRunAreKept)
 
 TEST(geometry, includedGrainListsAndMacros)
 {
-    tempDir dir;
+    tempDir dir("nmmGeometryTest");
     dir.write("constant/geometry/grains",
         "// written by a grain generator\n"
         "grain1 { material quartz; polygon ((1 0) (2 0) (2 1) (1 1)); }\n"

@@ -2,6 +2,7 @@
 // forms in plane strain and plane stress, and every input error.
 
 #include "nmmSolid/material/linearElastic/linearElastic.H"
+#include "testTools.H"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -48,25 +49,10 @@ const nmm::linearElastic& asElastic(const nmm::solidMaterial& m)
     return dynamic_cast<const nmm::linearElastic&>(m);
 }
 
-// The IOerror a call raises (fails the test if none)
-template<class Call>
-IOerror errorOf(Call call)
-{
-    try
-    {
-        call();
-    }
-    catch (const IOerror& err)
-    {
-        return err;
-    }
-    ADD_FAILURE() << "no error";
-    return IOerror("none");
-}
-
+// The IOerror reading text raises (fails the test if none)
 IOerror errorReading(const std::string& text)
 {
-    return errorOf([&] { read(text); });
+    return nmm::test::errorOf([&] { read(text); });
 }
 
 // (E, nu) pairs covering auxetic, zero, rock-like and nearly incompressible
@@ -320,10 +306,10 @@ TEST(materialLinearElastic, densityMayBeAbsentUntilItIsNeeded)
 
     for (const auto& err :
     {
-        errorOf([&] { m->density(); }),
-        errorOf([&] { m->pWaveSpeed(planeModel::planeStrain); }),
-        errorOf([&] { m->sWaveSpeed(); }),
-        errorOf([&] { m->barWaveSpeed(); })
+        nmm::test::errorOf([&] { m->density(); }),
+        nmm::test::errorOf([&] { m->pWaveSpeed(planeModel::planeStrain); }),
+        nmm::test::errorOf([&] { m->sWaveSpeed(); }),
+        nmm::test::errorOf([&] { m->barWaveSpeed(); })
     })
     {
         EXPECT_THAT(err.message(), HasSubstr("Material 'rock' (linearElastic)"));
@@ -346,8 +332,8 @@ TEST(materialLinearElastic, thermalExpansionIsAPair)
 
     const auto plain = read("rock { type linearElastic; E 4e8; nu 0.3; }");
     EXPECT_FALSE(plain->hasThermalExpansion());
-    EXPECT_EQ(errorOf([&] { plain->alpha(); }).keyword(), "alpha");
-    EXPECT_EQ(errorOf([&] { plain->Tref(); }).keyword(), "Tref");
+    EXPECT_EQ(nmm::test::errorOf([&] { plain->alpha(); }).keyword(), "alpha");
+    EXPECT_EQ(nmm::test::errorOf([&] { plain->Tref(); }).keyword(), "Tref");
 
     const IOerror noTref = errorReading
     (

@@ -6,6 +6,7 @@
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/case/caseFolder/caseFolder.H"
 #include "nmmSolid/material/linearElastic/linearElastic.H"
+#include "testTools.H"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -46,25 +47,10 @@ mechanicalProperties read(const std::string& text)
     return mechanicalProperties(dictionary::parse(text, fileName));
 }
 
-// The IOerror a call raises (fails the test if none)
-template<class Call>
-IOerror errorOf(Call call)
-{
-    try
-    {
-        call();
-    }
-    catch (const IOerror& err)
-    {
-        return err;
-    }
-    ADD_FAILURE() << "no error";
-    return IOerror("none");
-}
-
+// The IOerror reading text raises (fails the test if none)
 IOerror errorReading(const std::string& text)
 {
-    return errorOf([&] { read(text); });
+    return nmm::test::errorOf([&] { read(text); });
 }
 
 // Where the block 'upper' of an nmmMeshDict names its material
@@ -159,8 +145,8 @@ TEST(materialMechanicalProperties, unknownMaterialIsReportedWhereItIsNamed)
 
     for (const auto& err :
     {
-        errorOf([&] { props.material("rok", asked); }),
-        errorOf([&] { props.materialId("rok", asked); })
+        nmm::test::errorOf([&] { props.material("rok", asked); }),
+        nmm::test::errorOf([&] { props.materialId("rok", asked); })
     })
     {
         EXPECT_THAT(err.message(), HasSubstr("Unknown material 'rok'"));
@@ -177,7 +163,7 @@ TEST(materialMechanicalProperties, unknownMaterialIsReportedWhereItIsNamed)
         EXPECT_THAT(os.str(), HasSubstr("file: system/nmmMeshDict at line 3"));
     }
 
-    const IOerror far = errorOf([&] { props.material("granite", asked); });
+    const IOerror far = nmm::test::errorOf([&] { props.material("granite", asked); });
     EXPECT_THAT(far.message(), Not(HasSubstr("did you mean")));
     EXPECT_THAT(far.message(), HasSubstr("\n    rock\n    column"));
 }
@@ -292,7 +278,7 @@ TEST(materialMechanicalProperties, readsTheCaseFile)
     EXPECT_EQ(props.largestE(), 4e10);
 
     // Errors name the file that was read
-    const IOerror err = errorOf([&] { props.material("rok", {}); });
+    const IOerror err = nmm::test::errorOf([&] { props.material("rok", {}); });
     EXPECT_THAT(err.message(), HasSubstr("mechanicalProperties are 2"));
 }
 
