@@ -31,7 +31,7 @@ namespace
 
 const char* const fileName = "constant/mechanicalProperties";
 
-// The example of case-format.md
+// The example of the case format (constant/mechanicalProperties)
 const char* const caseFormatExample = R"(
 planeStress     no;             // plane strain by default, as in OpenFOAM
 thickness       1;              // out-of-plane thickness [m]
