@@ -605,6 +605,93 @@ void dictionaryParser::substituteKeyword
 }
 
 
+bool dictionaryParser::expandTag
+(
+    const std::string& s,
+    std::size_t& i,
+    std::string& out
+) const
+{
+    const std::size_t close = s.find('>', i);
+    if (close == std::string::npos) return false;
+    const std::string tag = s.substr(i + 1, close - i - 1);
+    if (tag == "case") out += caseDir_.string();
+    else if (tag == "system" || tag == "constant") out += (caseDir_ / tag).string();
+    else if (tag == "etc" && !etcDirs_.empty()) out += etcDirs_.front().string();
+    else return false;
+    i = close + 1;
+    return true;
+}
+
+
+std::string dictionaryParser::variableNameAt
+(
+    const std::string& s,
+    std::size_t& i,
+    const dictionary& d,
+    const sourcePosition& where
+) const
+{
+    // s[i] is the '$'
+    if (s[i + 1] == '{')
+    {
+        int depth = 0;
+        std::size_t j = i + 1;
+        for (; j < s.size(); ++j)
+        {
+            if (s[j] == '{') ++depth;
+            else if (s[j] == '}' && --depth == 0) break;
+        }
+        if (j >= s.size())
+        {
+            throw IOerror("unterminated '${' in \"" + s + "\"", where);
+        }
+        const std::string inner = s.substr(i + 2, j - i - 2);
+        i = j + 1;
+        return expandString(inner, d, where);
+    }
+    // Unbraced names stop at '/': "$FOAM_CASE/constant"
+    std::size_t j = i + 1;
+    while (j < s.size()
+        && (std::isalnum(static_cast<unsigned char>(s[j]))
+            || s[j] == '_' || s[j] == '.' || s[j] == ':' || s[j] == '^'))
+    {
+        ++j;
+    }
+    // A trailing '.' belongs to the text, not the name
+    while (j > i + 1 && s[j - 1] == '.') --j;
+    const std::string name = s.substr(i + 1, j - i - 1);
+    i = j;
+    return name;
+}
+
+
+std::string dictionaryParser::variableText
+(
+    const std::string& name,
+    const std::string& s,
+    const dictionary& d,
+    const sourcePosition& where
+) const
+{
+    if (const entry* e = d.findScoped(name); e && !e->isDict())
+    {
+        e->markUsedAsMacro();
+        std::ostringstream os;
+        for (std::size_t k = 0; k < e->stream().size(); ++k)
+        {
+            const token& t = e->stream()[k];
+            if (k) os << ' ';
+            os << (t.isString() ? t.text : t.str());
+        }
+        return os.str();
+    }
+    if (const auto env = environmentValue(name)) return *env;
+    throw IOerror("undefined variable '$" + name + "' in \"" + s + "\"",
+        where, "$" + name);
+}
+
+
 std::string dictionaryParser::expandString
 (
     const std::string& s,
@@ -617,99 +704,23 @@ std::string dictionaryParser::expandString
     while (i < s.size())
     {
         const char c = s[i];
+        if (c == '<' && expandTag(s, i, out)) continue;
+        if (c == '$' && i + 1 < s.size())
+        {
+            const std::string name = variableNameAt(s, i, d, where);
+            out += name.empty() ? std::string("$") : variableText(name, s, d, where);
+            continue;
+        }
         if (c == '~' && i == 0 && (s.size() == 1 || s[1] == '/'))
         {
             const char* home = std::getenv("HOME");
             out += home ? home : "";
-            ++i;
-            continue;
         }
-        if (c == '<')
-        {
-            const std::size_t close = s.find('>', i);
-            if (close != std::string::npos)
-            {
-                const std::string tag = s.substr(i + 1, close - i - 1);
-                const fs::path& caseDir = caseDir_;
-                if (tag == "case") { out += caseDir.string(); i = close + 1; continue; }
-                if (tag == "system" || tag == "constant")
-                {
-                    out += (caseDir / tag).string();
-                    i = close + 1;
-                    continue;
-                }
-                if (tag == "etc" && !etcDirs_.empty())
-                {
-                    out += etcDirs_.front().string();
-                    i = close + 1;
-                    continue;
-                }
-            }
-        }
-        if (c != '$' || i + 1 >= s.size())
+        else
         {
             out += c;
-            ++i;
-            continue;
         }
-        std::string name;
-        if (s[i + 1] == '{')
-        {
-            int depth = 0;
-            std::size_t j = i + 1;
-            for (; j < s.size(); ++j)
-            {
-                if (s[j] == '{') ++depth;
-                else if (s[j] == '}' && --depth == 0) break;
-            }
-            if (j >= s.size())
-            {
-                throw IOerror("unterminated '${' in \"" + s + "\"", where);
-            }
-            name = expandString(s.substr(i + 2, j - i - 2), d, where);
-            i = j + 1;
-        }
-        else
-        {
-            // Unbraced names stop at '/': "$FOAM_CASE/constant"
-            std::size_t j = i + 1;
-            while (j < s.size()
-                && (std::isalnum(static_cast<unsigned char>(s[j]))
-                    || s[j] == '_' || s[j] == '.' || s[j] == ':' || s[j] == '^'))
-            {
-                ++j;
-            }
-            // A trailing '.' belongs to the text, not the name
-            while (j > i + 1 && s[j - 1] == '.') --j;
-            name = s.substr(i + 1, j - i - 1);
-            i = j;
-        }
-        if (name.empty())
-        {
-            out += '$';
-            continue;
-        }
-        if (const entry* e = d.findScoped(name); e && !e->isDict())
-        {
-            e->markUsedAsMacro();
-            std::ostringstream os;
-            for (std::size_t k = 0; k < e->stream().size(); ++k)
-            {
-                const token& t = e->stream()[k];
-                if (k) os << ' ';
-                os << (t.isString() ? t.text : t.str());
-            }
-            out += os.str();
-        }
-        else if (const auto env = environmentValue(name))
-        {
-            out += *env;
-        }
-        else
-        {
-            throw IOerror("undefined variable '$" + name + "' in \"" + s + "\"",
-                where, "$" + name);
-        }
+        ++i;
     }
     return out;
 }
