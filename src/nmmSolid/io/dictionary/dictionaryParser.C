@@ -27,11 +27,18 @@ std::string readWholeFile(const fs::path& file, bool& ok)
     // No throwing std::filesystem calls on user-given names: a name too
     // long for the system must be "cannot open", not an escaping exception
     std::error_code ec;
-    std::ifstream is(file, std::ios::binary);
+    std::ifstream is(file, std::ios::binary | std::ios::ate);
     ok = static_cast<bool>(is) && !fs::is_directory(file, ec);
     if (!ok) return {};
-    return std::string(std::istreambuf_iterator<char>(is), {});
+    // One read of the whole file: geometry includes run to megabytes
+    const std::streamsize size = is.tellg();
+    std::string text(size > 0 ? std::size_t(size) : 0, '\0');
+    is.seekg(0);
+    if (size > 0) is.read(text.data(), size);
+    ok = static_cast<bool>(is) || size == 0;
+    return text;
 }
+
 
 const char* matchingOpen(char close)
 {
@@ -135,12 +142,13 @@ dictionary dictionaryParser::parseText(std::string_view text, const std::string&
 }
 
 
-dictionary dictionaryParser::parseTokens(const tokenList& tokens, const std::string& name)
+dictionary dictionaryParser::parseTokens(tokenList tokens, const std::string& name)
 {
     dictionary d(name);
     caseDir_ = caseDirFor(name);
     dictionaryLexer lx({}, internFileName(name));
-    for (auto t = tokens.rbegin(); t != tokens.rend(); ++t) lx.putBack(*t);
+    std::reverse(tokens.begin(), tokens.end());
+    lx.putBackAll(std::move(tokens));
     parseEntries(lx, d, nullptr);
     return d;
 }
