@@ -183,6 +183,19 @@ std::string joined(const std::vector<std::string>& words)
 } // End anonymous namespace
 
 
+namespace
+{
+
+// A bad value is reported at the value, not at its keyword
+IOerror valueError(const entry& e, const std::string& message)
+{
+    return IOerror(message,
+        e.stream().empty() ? e.where() : e.stream().back().where, e.keyword());
+}
+
+} // End anonymous namespace
+
+
 void keywordTable::checkValue(const keyword& k, const entry& e) const
 {
     using vk = valueKind;
@@ -209,7 +222,7 @@ void keywordTable::checkValue(const keyword& k, const entry& e) const
             const bool high = k.max && (k.maxExclusive ? v >= *k.max : v > *k.max);
             if (low || high)
             {
-                throw e.error("value " + formatScalar(v) + " is out of range "
+                throw valueError(e, "value " + formatScalar(v) + " is out of range "
                     + rangeText(k) + " (" + k.meaning + ")");
             }
             break;
@@ -227,7 +240,7 @@ void keywordTable::checkValue(const keyword& k, const entry& e) const
                 std::string msg = "'" + w + "' is not a valid choice";
                 const std::string hint = didYouMean(w, k.choiceList);
                 if (!hint.empty()) msg += "; " + hint;
-                throw e.error(msg + " (valid: " + joined(k.choiceList) + ")");
+                throw valueError(e, msg + " (valid: " + joined(k.choiceList) + ")");
             }
             break;
         }
