@@ -192,12 +192,82 @@ void dictionaryLexer::readVariable(token& t)
 }
 
 
-void dictionaryLexer::readNumber(token& t)
+namespace
 {
-    std::string& s = t.text;
-    const bool hex = (peekChar() == '0' && (peekChar(1) == 'x' || peekChar(1) == 'X'))
-        || ((peekChar() == '-' || peekChar() == '+') && peekChar(1) == '0'
-            && (peekChar(2) == 'x' || peekChar(2) == 'X'));
+
+void setInteger(token& t, long long v)
+{
+    t.type = token::kind::integer;
+    t.label = v;
+    t.scalar = double(v);
+}
+
+void setFloating(token& t, double v)
+{
+    t.type = token::kind::floating;
+    t.scalar = v;
+}
+
+bool isIntegerSpelling(const std::string& s)
+{
+    std::size_t i = (s[0] == '-' || s[0] == '+') ? 1 : 0;
+    if (i == s.size()) return false;
+    for (; i < s.size(); ++i) if (!isDigit(s[i])) return false;
+    return true;
+}
+
+// Decimal numbers: std::from_chars (no locale, much faster than strtod)
+bool readDecimal(token& t)
+{
+    const std::string& s = t.text;
+    const char* first = s.c_str() + (s[0] == '+' ? 1 : 0);
+    const char* last = s.c_str() + s.size();
+    if (isIntegerSpelling(s))
+    {
+        long long v = 0;
+        const auto r = std::from_chars(first, last, v);
+        if (r.ec == std::errc() && r.ptr == last)
+        {
+            setInteger(t, v);
+            return true;
+        }
+    }
+    double v = 0;
+    const auto r = std::from_chars(first, last, v);
+    if (r.ptr != last || s.back() == 'e' || s.back() == 'E') return false;
+    if (r.ec == std::errc()) setFloating(t, v);
+    else if (r.ec == std::errc::result_out_of_range) setFloating(t, std::strtod(s.c_str(), nullptr));
+    else return false;
+    return true;
+}
+
+// Hexadecimal numbers (0x1F, 0x1.8p3), which from_chars does not spell
+bool readHexadecimal(token& t)
+{
+    const std::string& s = t.text;
+    const char* begin = s.c_str();
+    char* end = nullptr;
+    if (s.find_first_of(".pP") == std::string::npos)
+    {
+        errno = 0;
+        const long long v = std::strtoll(begin, &end, 16);
+        if (end == begin + s.size() && errno == 0)
+        {
+            setInteger(t, v);
+            return true;
+        }
+    }
+    const double v = std::strtod(begin, &end);
+    if (end != begin + s.size()) return false;
+    setFloating(t, v);
+    return true;
+}
+
+} // End anonymous namespace
+
+
+void dictionaryLexer::readNumberText(std::string& s, bool hex)
+{
     while (!atEof())
     {
         const char c = peekChar();
@@ -216,72 +286,24 @@ void dictionaryLexer::readNumber(token& t)
         }
         s += get();
     }
+}
 
-    if (s == "-" || s == "+")
+
+void dictionaryLexer::readNumber(token& t)
+{
+    const bool hex = (peekChar() == '0' && (peekChar(1) == 'x' || peekChar(1) == 'X'))
+        || ((peekChar() == '-' || peekChar() == '+') && peekChar(1) == '0'
+            && (peekChar(2) == 'x' || peekChar(2) == 'X'));
+    readNumberText(t.text, hex);
+    if (t.text == "-" || t.text == "+")
     {
         t.type = token::kind::punctuation;
         return;
     }
-
-    const char* begin = s.c_str();
-    const bool integerForm = [&]
+    if (!(hex ? readHexadecimal(t) : readDecimal(t)))
     {
-        std::size_t i = (s[0] == '-' || s[0] == '+') ? 1 : 0;
-        if (i == s.size()) return false;
-        for (; i < s.size(); ++i) if (!isDigit(s[i])) return false;
-        return true;
-    }();
-
-    // Decimal numbers: std::from_chars (no locale, much faster than strtod)
-    if (!hex)
-    {
-        const char* first = begin + (s[0] == '+' ? 1 : 0);
-        const char* last = begin + s.size();
-        if (integerForm)
-        {
-            long long v = 0;
-            const auto r = std::from_chars(first, last, v);
-            if (r.ec == std::errc() && r.ptr == last)
-            {
-                t.type = token::kind::integer;
-                t.label = v;
-                t.scalar = double(v);
-                return;
-            }
-        }
-        double v = 0;
-        const auto r = std::from_chars(first, last, v);
-        if (r.ptr == last && (r.ec == std::errc() || r.ec == std::errc::result_out_of_range)
-         && s.back() != 'e' && s.back() != 'E')
-        {
-            t.type = token::kind::floating;
-            t.scalar = r.ec == std::errc() ? v : std::strtod(begin, nullptr);
-            return;
-        }
-        throw IOerror("bad number '" + s + "'", t.where);
+        throw IOerror("bad number '" + t.text + "'", t.where);
     }
-
-    char* end = nullptr;
-    errno = 0;
-    if (integerForm || (hex && s.find_first_of(".pP") == std::string::npos))
-    {
-        const long long v = std::strtoll(begin, &end, 0 + (hex ? 16 : 10));
-        if (end == begin + s.size() && errno == 0)
-        {
-            t.type = token::kind::integer;
-            t.label = v;
-            t.scalar = double(v);
-            return;
-        }
-    }
-    errno = 0;
-    const double v = std::strtod(begin, &end);
-    if (end != begin + s.size() || s.back() == 'e' || s.back() == 'E')
-    {
-        throw IOerror("bad number '" + s + "'", t.where);
-    }
-    t.type = token::kind::floating;
-    t.scalar = v;
 }
 
 

@@ -949,14 +949,6 @@ void dictionaryParser::includeTokens
 namespace
 {
 
-// "name(a, b, key=value)" split into its parts, as OpenFOAM's #includeFunc
-struct functionCall
-{
-    std::string name;
-    std::vector<std::string> args;
-    std::vector<std::pair<std::string, std::string>> named;
-};
-
 std::string trimmed(const std::string& s)
 {
     const auto b = s.find_first_not_of(" \t\n");
@@ -964,9 +956,9 @@ std::string trimmed(const std::string& s)
     return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
 }
 
-functionCall splitFunctionCall(const std::string& spec)
+dictionaryParser::functionCall splitFunctionCall(const std::string& spec)
 {
-    functionCall f;
+    dictionaryParser::functionCall f;
     const auto open = spec.find('(');
     f.name = trimmed(spec.substr(0, open));
     if (open == std::string::npos) return f;
@@ -1020,6 +1012,72 @@ fs::path searchTree(const fs::path& dir, const std::string& name)
 } // End anonymous namespace
 
 
+fs::path dictionaryParser::functionTemplate
+(
+    const std::string& name,
+    const token& arg,
+    const token& dir
+) const
+{
+    // The case's system/ first, then etc/caseDicts/postProcessing
+    std::error_code ec;
+    const fs::path local = caseDirFor(arg.where.fileName()) / "system" / name;
+    if (fs::is_regular_file(local, ec)) return local;
+    for (const auto& etc : etcDirs_)
+    {
+        fs::path file = searchTree(etc / "caseDicts" / "postProcessing", name);
+        if (!file.empty()) return file;
+    }
+    throw IOerror("#includeFunc: no function object template '" + name
+        + "' in the case's system/ or in caseDicts/postProcessing of the etc "
+        "directories", arg.where, dir.text);
+}
+
+
+void dictionaryParser::setFunctionArguments
+(
+    dictionary& func,
+    const functionCall& call,
+    const token& arg,
+    const token& dir
+) const
+{
+    auto fail = [&](const std::string& why)
+    {
+        return IOerror("#includeFunc " + arg.text + ": " + why, arg.where, dir.text);
+    };
+    // Arguments are plain values: a directive or macro in one would be
+    // read again (and differently) when the result is written out
+    std::vector<std::string> values = call.args;
+    for (const auto& [key, value] : call.named)
+    {
+        if (key == "FoamFile") throw fail("'FoamFile' is a file header, not an argument");
+        values.push_back(value);
+    }
+    for (const auto& value : values)
+    {
+        if (value.find_first_of("#$") != std::string::npos)
+        {
+            throw fail("argument '" + value + "' holds a directive or macro; "
+                "give a plain value");
+        }
+    }
+    std::string fields = "(";
+    for (const auto& a : call.args) fields += " " + a;
+    fields += " )";
+    try
+    {
+        if (call.args.size() == 1) func.set("field", call.args[0]);
+        if (!call.args.empty()) func.set("fields", fields);
+        for (const auto& [key, value] : call.named) func.set(key, value);
+    }
+    catch (const IOerror& err)
+    {
+        throw fail("bad argument: " + err.message());
+    }
+}
+
+
 void dictionaryParser::includeFunc(dictionaryLexer& lx, dictionary& d, const token& dir)
 {
     token arg;
@@ -1029,70 +1087,14 @@ void dictionaryParser::includeFunc(dictionaryLexer& lx, dictionary& d, const tok
     }
     const functionCall call = splitFunctionCall(arg.text);
 
-    // The case's system/ first, then etc/caseDicts/postProcessing
-    fs::path file = caseDirFor(arg.where.fileName()) / "system" / call.name;
-    std::error_code ec;
-    if (!fs::is_regular_file(file, ec))
-    {
-        file.clear();
-        for (const auto& etc : etcDirs_)
-        {
-            file = searchTree(etc / "caseDicts" / "postProcessing", call.name);
-            if (!file.empty()) break;
-        }
-    }
-    if (file.empty())
-    {
-        throw IOerror("#includeFunc: no function object template '" + call.name
-            + "' in the case's system/ or in caseDicts/postProcessing of the etc "
-            "directories", arg.where, dir.text);
-    }
-
     readOptions sub = opts_;
     sub.etcDirs = etcDirs_;
-    dictionary funcs = dictionaryParser(sub).parseFile(file);
+    dictionary funcs =
+        dictionaryParser(sub).parseFile(functionTemplate(call.name, arg, dir));
     funcs.remove("FoamFile");
     std::unique_ptr<dictionary> func = funcs.isDict(call.name)
         ? funcs.subDict(call.name).clone() : funcs.clone();
-
-    auto wordList = [](const std::vector<std::string>& words)
-    {
-        std::string s = "(";
-        for (const auto& w : words) s += " " + w;
-        return s + " )";
-    };
-    // Arguments are plain values: a directive or macro in one would be
-    // read again (and differently) when the result is written out
-    for (const auto& kv : call.named)
-    {
-        if (kv.first == "FoamFile")
-        {
-            throw IOerror("#includeFunc " + arg.text + ": 'FoamFile' is a "
-                "file header, not an argument", arg.where, dir.text);
-        }
-    }
-    std::vector<std::string> values = call.args;
-    for (const auto& kv : call.named) values.push_back(kv.second);
-    for (const auto& value : values)
-    {
-        if (value.find_first_of("#$") != std::string::npos)
-        {
-            throw IOerror("#includeFunc " + arg.text + ": argument '" + value
-                + "' holds a directive or macro; give a plain value",
-                arg.where, dir.text);
-        }
-    }
-    try
-    {
-        if (call.args.size() == 1) func->set("field", call.args[0]);
-        if (!call.args.empty()) func->set("fields", wordList(call.args));
-        for (const auto& [key, value] : call.named) func->set(key, value);
-    }
-    catch (const IOerror& err)
-    {
-        throw IOerror("#includeFunc " + arg.text + ": bad argument: "
-            + err.message(), arg.where, dir.text);
-    }
+    setFunctionArguments(*func, call, arg, dir);
 
     // The keyword is the call with the characters a word may not hold removed
     std::string keyword;
