@@ -1,5 +1,6 @@
 #include "nmmSolid/cover/mathematicalCover/delaunayCover/delaunayCover.H"
 
+#include "nmmSolid/cover/physicalCover/physicalCover.H"
 #include "nmmSolid/geometry/blockGeometry/blockGeometry.H"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -166,6 +167,7 @@ const keywordTable& delaunayCover::keywords()
         keywordTable t("delaunay", "CGAL Delaunay refinement of the blocks' "
             "bounding box: bounded edge length and minimum angle");
         t.word("type", "cover type").required();
+        t.include(physicalCover::keywords());
         t.scalar("cellSize", "largest triangle edge length", "m")
             .required().above(0);
         t.scalar("margin", "cover extends this far beyond the blocks; "

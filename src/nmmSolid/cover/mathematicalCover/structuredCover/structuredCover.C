@@ -1,5 +1,6 @@
 #include "nmmSolid/cover/mathematicalCover/structuredCover/structuredCover.H"
 
+#include "nmmSolid/cover/physicalCover/physicalCover.H"
 #include "nmmSolid/geometry/blockGeometry/blockGeometry.H"
 
 #include <algorithm>
@@ -15,6 +16,7 @@ const keywordTable& structuredCover::keywords()
         keywordTable t("structured", "regular right triangles, squares split "
             "with alternating diagonals (union-jack pattern)");
         t.word("type", "cover type").required();
+        t.include(physicalCover::keywords());
         t.scalar("cellSize", "square side (triangle leg length)", "m")
             .required().above(0);
         t.scalar("margin", "cover extends this far beyond the blocks; "
