@@ -1,0 +1,289 @@
+#include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
+
+#include "nmmSolid/global/clock/cpuTime.H"
+#include "nmmSolid/global/fatalError/fatalError.H"
+
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <iomanip>
+#include <ostream>
+
+namespace nmm
+{
+
+namespace
+{
+
+using label = physicalCover::label;
+
+Eigen::Matrix2d rotation(double w)
+{
+    Eigen::Matrix2d R;
+    R << std::cos(w), -std::sin(w),
+         std::sin(w), std::cos(w);
+    return R;
+}
+
+
+//- sigma (xx, yy, xy, zz) turned by R: R S R^T in the plane
+Eigen::Vector4d rotated(const Eigen::Vector4d& s, const Eigen::Matrix2d& R)
+{
+    Eigen::Matrix2d S;
+    S << s[0], s[2],
+         s[2], s[1];
+    const Eigen::Matrix2d Sr = R*S*R.transpose();
+    return {Sr(0, 0), Sr(1, 1), Sr(0, 1), s[3]};
+}
+
+} // End anonymous namespace
+
+
+std::vector<nmmAssembler::elementMaterial> nmmSolidModel::elementMaterials() const
+{
+    const auto& props = *parts_.properties;
+    std::vector<nmmAssembler::elementMaterial> perMaterial(props.size());
+    for (std::size_t m = 0; m < props.size(); ++m)
+    {
+        auto& em = perMaterial[m];
+        em.D = props.elasticityMatrix(m);
+        if (parts_.scheme.dynamic()) em.rho = props.material(m).density();
+        // Plane strain: sigma_zz = nu (sigma_xx + sigma_yy), and D01/D00 = nu/(1 - nu)
+        em.zzFactor = props.planeStress() ? 0 : em.D(0, 1)/(em.D(0, 0) + em.D(0, 1));
+        em.lambdaMax = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(em.D)
+            .eigenvalues().maxCoeff();
+    }
+    std::vector<nmmAssembler::elementMaterial> perElement;
+    for (const auto& e : parts_.elements->elements())
+    {
+        perElement.push_back(perMaterial[materialOfBlock_[e.block]]);
+    }
+    return perElement;
+}
+
+
+nmmSolidModel::nmmSolidModel(parts p)
+:
+    parts_(std::move(p))
+{
+    for (const auto& b : parts_.geometry->blocks())
+    {
+        materialOfBlock_.push_back(parts_.properties->materialId(b.material(), b.where()));
+    }
+    std::vector<const boundaryRule*> rules;
+    for (const int r : parts_.segmentRule)
+    {
+        rules.push_back(r < 0 ? nullptr : &parts_.rules[r]);
+    }
+    assembler_ = std::make_unique<nmmAssembler>
+    (
+        *parts_.cover, *parts_.elements, elementMaterials(),
+        parts_.properties->thickness(), std::move(rules), parts_.gravity,
+        parts_.largeDisplacement
+    );
+    if (parts_.scheme.dynamic())
+    {
+        const cpuTime clock;
+        assembler_->buildMass();
+        timing_["mass matrix"] += clock.elapsed();
+    }
+    state_.resize(parts_.elements->nUnknowns(), parts_.elements->nElements());
+}
+
+
+std::string nmmSolidModel::blockOfUnknown(long dof) const
+{
+    const auto p = parts_.elements->unknownPatches()[std::size_t(dof/2)];
+    return parts_.geometry->blocks()[parts_.elements->patches()[p].block].name();
+}
+
+
+void nmmSolidModel::solveStep(double dt)
+{
+    cpuTime clock;
+    const auto sys = assembler_->assemble(state_, dt, parts_.scheme);
+    timing_["assembly"] += clock.elapsed();
+
+    clock = cpuTime();
+    try
+    {
+        parts_.solver->factorise(sys.K);
+    }
+    catch (const singularSystem& err)
+    {
+        throw fatalError
+        (
+            "block '" + blockOfUnknown(err.dof()) + "' is free to move: the "
+            "system of the step to time " + std::to_string(state_.time + dt)
+            + " is singular (" + err.what() + "). Hold every block with "
+            "fixedValue or fixedNormal patches in 0/D, or use a dynamic "
+            "analysis, where inertia holds a free block."
+        );
+    }
+    timing_["factorisation"] += clock.elapsed();
+
+    clock = cpuTime();
+    const Eigen::VectorXd dd = parts_.solver->solve(sys.f);
+    timing_["solution"] += clock.elapsed();
+
+    clock = cpuTime();
+    trial_ = state_;
+    trial_.time = state_.time + dt;
+    ++trial_.timeIndex;
+    const auto patchD0 = assembler_->patchDisplacements(state_.D);
+    const auto dPatch = assembler_->patchDisplacements(dd);
+    std::vector<double> rotations;
+    updateStresses(patchD0, dPatch, rotations);
+    updateMotion(dd, dt);
+    if (parts_.largeDisplacement) correctRotations(patchD0, rotations);
+    trialReady_ = true;
+    timing_["update"] += clock.elapsed();
+}
+
+
+void nmmSolidModel::updateStresses
+(
+    const Eigen::Matrix2Xd& patchD0,
+    const Eigen::Matrix2Xd& dPatch,
+    std::vector<double>& rotations
+)
+{
+    const auto& els = parts_.elements->elements();
+    rotations.assign(els.size(), 0.0);
+    for (std::size_t e = 0; e < els.size(); ++e)
+    {
+        const auto T = assembler_->currentTriangle(label(e), patchD0);
+        const auto B = manifoldElement::strainMatrix(T);
+        manifoldElement::vector6 de;
+        for (int k = 0; k < 3; ++k) de.segment<2>(2*k) = dPatch.col(els[e].patches[k]);
+
+        double w = 0;
+        for (int k = 0; k < 3; ++k) w += 0.5*(B(0, 2*k)*de[2*k + 1] - B(1, 2*k + 1)*de[2*k]);
+        rotations[e] = w;
+
+        const auto& m = assembler_->material(label(e));
+        Eigen::Vector4d& s = trial_.sigma[e];
+        if (parts_.largeDisplacement) s = rotated(s, rotation(w));
+        const Eigen::Vector3d ds = m.D*(B*de);
+        s.head<3>() += ds;
+        s[3] += m.zzFactor*(ds[0] + ds[1]);
+    }
+}
+
+
+void nmmSolidModel::updateMotion(const Eigen::VectorXd& dd, double dt)
+{
+    trial_.D = state_.D + dd;
+    const timeScheme& ts = parts_.scheme;
+    if (!ts.dynamic()) return;
+    const Eigen::VectorXd& V0 = state_.V;
+    const Eigen::VectorXd& A0 = state_.A;
+    trial_.A = (dd - dt*V0 - dt*dt*(0.5 - ts.beta)*A0)/(ts.beta*dt*dt);
+    trial_.V = V0 + dt*((1 - ts.gamma)*A0 + ts.gamma*trial_.A);
+    if (ts.type == timeScheme::kind::DDA) trial_.V *= ts.velocityRatio;
+}
+
+
+void nmmSolidModel::correctRotations
+(
+    const Eigen::Matrix2Xd& patchD0,
+    const std::vector<double>& rotations
+)
+{
+    const auto& pc = *parts_.elements;
+    const auto& els = pc.elements();
+
+    // Block centroids and patch rotations at the start of the step
+    std::vector<Eigen::Vector2d> moment(parts_.geometry->nBlocks(), Eigen::Vector2d::Zero());
+    std::vector<double> blockArea(parts_.geometry->nBlocks(), 0.0);
+    std::vector<double> patchW(pc.nPatches(), 0.0), patchArea(pc.nPatches(), 0.0);
+    for (std::size_t e = 0; e < els.size(); ++e)
+    {
+        const auto T = assembler_->currentTriangle(label(e), patchD0);
+        const double a = els[e].moments.area;
+        moment[els[e].block] += T*els[e].moments.w;
+        blockArea[els[e].block] += a;
+        for (const label p : els[e].patches)
+        {
+            patchW[p] += a*rotations[e];
+            patchArea[p] += a;
+        }
+    }
+
+    for (std::size_t u = 0; u < pc.unknownPatches().size(); ++u)
+    {
+        const label p = pc.unknownPatches()[u];
+        const label b = pc.patches()[p].block;
+        const double w = patchArea[p] > 0 ? patchW[p]/patchArea[p] : 0;
+        const Eigen::Matrix2d R = rotation(w);
+        Eigen::Matrix2d W;
+        W << 0, -w,
+             w, 0;
+        const Eigen::Vector2d x = parts_.cover->nodes()[pc.patches()[p].node] + patchD0.col(p);
+        const Eigen::Vector2d c = moment[b]/blockArea[b];
+        trial_.D.segment<2>(2*u) += (R - Eigen::Matrix2d::Identity() - W)*(x - c);
+        if (parts_.scheme.dynamic())
+        {
+            trial_.V.segment<2>(2*u) = R*trial_.V.segment<2>(2*u);
+        }
+    }
+}
+
+
+void nmmSolidModel::acceptStep()
+{
+    if (!trialReady_)
+    {
+        throw fatalError("acceptStep() without a solved step");
+    }
+    state_ = std::move(trial_);
+    trialReady_ = false;
+}
+
+
+void nmmSolidModel::restoreState(const solidState& s)
+{
+    state_ = s;
+    trialReady_ = false;
+}
+
+
+Eigen::Matrix2Xd nmmSolidModel::patchDisplacements() const
+{
+    return assembler_->patchDisplacements(state_.D);
+}
+
+
+Eigen::Matrix2Xd nmmSolidModel::patchVelocities() const
+{
+    return assembler_->patchDisplacements(state_.V);
+}
+
+
+std::vector<double> nmmSolidModel::blockAreas() const
+{
+    const auto patchD = patchDisplacements();
+    std::vector<double> area(parts_.geometry->nBlocks(), 0.0);
+    const auto& els = parts_.elements->elements();
+    for (std::size_t e = 0; e < els.size(); ++e)
+    {
+        const auto T = assembler_->currentTriangle(label(e), patchD);
+        const double scale = manifoldElement::signedArea(T)
+            /manifoldElement::signedArea(assembler_->referenceTriangle(label(e)));
+        area[els[e].block] += els[e].moments.area*scale;
+    }
+    return area;
+}
+
+
+void nmmSolidModel::printTiming(std::ostream& os) const
+{
+    os << "Timing (CPU s):";
+    for (const auto& [part, seconds] : timing_)
+    {
+        os << "  " << part << ' ' << std::setprecision(3) << seconds;
+    }
+    os << '\n';
+}
+
+} // End namespace nmm

@@ -1,0 +1,364 @@
+#include "nmmSolid/solver/assembler/nmmAssembler.H"
+
+#include "nmmSolid/cover/mathematicalCover/mathematicalCover/mathematicalCover.H"
+
+#include <array>
+#include <cmath>
+
+namespace nmm
+{
+
+namespace
+{
+
+using manifoldElement::baryPoint;
+using manifoldElement::matrix36;
+using manifoldElement::matrix66;
+using manifoldElement::triangleNodes;
+using manifoldElement::vector6;
+using matrix26 = Eigen::Matrix<double, 2, 6>;
+using matrix23 = Eigen::Matrix<double, 2, 3>;
+
+//- Nitsche's parameter over the bound that keeps an element's energy
+//  positive (see the class description)
+constexpr double nitscheSafety = 2;
+constexpr double nitscheBound = 8;
+
+//- 3-point Gauss rule on [0, 1]
+const std::array<double, 3> gaussPoints{{0.5 - 0.5*std::sqrt(0.6), 0.5, 0.5 + 0.5*std::sqrt(0.6)}};
+const std::array<double, 3> gaussWeights{{5.0/18, 8.0/18, 5.0/18}};
+
+
+matrix26 weightMatrix(const baryPoint& lambda)
+{
+    matrix26 N = matrix26::Zero();
+    for (int k = 0; k < 3; ++k)
+    {
+        N(0, 2*k) = lambda[k];
+        N(1, 2*k + 1) = lambda[k];
+    }
+    return N;
+}
+
+
+//- Traction P_n sigma of a Voigt stress (xx, yy, xy) on normal n
+matrix23 tractionMatrix(const Eigen::Vector2d& n)
+{
+    matrix23 P;
+    P << n.x(), 0, n.y(),
+         0, n.y(), n.x();
+    return P;
+}
+
+
+//- A boundary segment of an element in the current configuration
+struct segmentGeometry
+{
+    Eigen::Vector2d p, q, normal;
+    double length;
+};
+
+
+segmentGeometry currentSegment
+(
+    const triangleNodes& T,
+    const physicalCover::boundarySegment& s
+)
+{
+    segmentGeometry g;
+    g.p = manifoldElement::toCartesian(T, s.p);
+    g.q = manifoldElement::toCartesian(T, s.q);
+    const Eigen::Vector2d d = g.q - g.p;
+    g.length = d.norm();
+    // Material on the left: the outward normal is on the right
+    g.normal = Eigen::Vector2d::Zero();
+    if (g.length > 0) g.normal = Eigen::Vector2d(d.y(), -d.x())/g.length;
+    return g;
+}
+
+} // End anonymous namespace
+
+
+nmmAssembler::nmmAssembler
+(
+    const mathematicalCover& cover,
+    const physicalCover& pc,
+    std::vector<elementMaterial> materials,
+    double thickness,
+    std::vector<const boundaryRule*> segmentRules,
+    const Eigen::Vector2d& gravity,
+    bool updateGeometry
+)
+:
+    cover_(cover),
+    pc_(pc),
+    materials_(std::move(materials)),
+    thickness_(thickness),
+    rules_(std::move(segmentRules)),
+    gravity_(gravity),
+    updateGeometry_(updateGeometry)
+{}
+
+
+Eigen::Matrix2Xd nmmAssembler::patchDisplacements(const Eigen::VectorXd& D) const
+{
+    Eigen::Matrix2Xd d = Eigen::Matrix2Xd::Zero(2, pc_.nPatches());
+    for (label p = 0; p < label(pc_.nPatches()); ++p)
+    {
+        for (auto t = pc_.extensionBegin(p); t != pc_.extensionEnd(p); ++t)
+        {
+            d.col(p) += t->coefficient*D.segment<2>(2*t->unknownPatch);
+        }
+    }
+    return d;
+}
+
+
+triangleNodes nmmAssembler::referenceTriangle(label e) const
+{
+    return physicalCover::triangleOf(cover_, pc_.elements()[e]);
+}
+
+
+triangleNodes nmmAssembler::currentTriangle
+(
+    label e,
+    const Eigen::Matrix2Xd& patchD
+) const
+{
+    triangleNodes T = referenceTriangle(e);
+    if (!updateGeometry_) return T;
+    for (int k = 0; k < 3; ++k) T.col(k) += patchD.col(pc_.elements()[e].patches[k]);
+    return T;
+}
+
+
+std::vector<nmmAssembler::dofTerm> nmmAssembler::dofTerms(label e) const
+{
+    std::vector<dofTerm> terms;
+    for (int k = 0; k < 3; ++k)
+    {
+        const label p = pc_.elements()[e].patches[k];
+        for (auto t = pc_.extensionBegin(p); t != pc_.extensionEnd(p); ++t)
+        {
+            for (int c = 0; c < 2; ++c)
+            {
+                terms.push_back({2*k + c, 2*t->unknownPatch + c, t->coefficient});
+            }
+        }
+    }
+    return terms;
+}
+
+
+Eigen::VectorXd nmmAssembler::elementDisplacements
+(
+    label e,
+    const Eigen::VectorXd& D
+) const
+{
+    Eigen::VectorXd de = Eigen::VectorXd::Zero(6);
+    for (const auto& t : dofTerms(e)) de[t.local] += t.coefficient*D[t.dof];
+    return de;
+}
+
+
+void nmmAssembler::scatter(label e, const matrix66& Ke, triplets& K) const
+{
+    const auto terms = dofTerms(e);
+    for (const auto& a : terms)
+    {
+        for (const auto& b : terms)
+        {
+            const double v = a.coefficient*b.coefficient*Ke(a.local, b.local);
+            if (v != 0) K.emplace_back(a.dof, b.dof, v);
+        }
+    }
+}
+
+
+void nmmAssembler::scatter(label e, const vector6& fe, Eigen::VectorXd& f) const
+{
+    for (const auto& a : dofTerms(e)) f[a.dof] += a.coefficient*fe[a.local];
+}
+
+
+void nmmAssembler::addElements
+(
+    const solidState& s,
+    triplets& K,
+    Eigen::VectorXd& f
+) const
+{
+    const auto patchD = patchDisplacements(s.D);
+    for (label e = 0; e < label(pc_.nElements()); ++e)
+    {
+        const auto T = currentTriangle(e, patchD);
+        const double scale = manifoldElement::signedArea(T)
+            /manifoldElement::signedArea(referenceTriangle(e));
+        const double area = pc_.elements()[e].moments.area*scale;
+        const matrix36 B = manifoldElement::strainMatrix(T);
+        scatter(e, manifoldElement::stiffness(T, area, materials_[e].D, thickness_), K);
+        const vector6 fInt = area*thickness_*B.transpose()*s.sigma[e].head<3>();
+        scatter(e, vector6(-fInt), f);
+    }
+}
+
+
+void nmmAssembler::addBodyForce(Eigen::VectorXd& f) const
+{
+    if (gravity_.isZero()) return;
+    for (label e = 0; e < label(pc_.nElements()); ++e)
+    {
+        const vector6 fe = manifoldElement::bodyForce
+        (
+            pc_.elements()[e].moments, materials_[e].rho*gravity_, thickness_
+        );
+        scatter(e, fe, f);
+    }
+}
+
+
+std::vector<double> nmmAssembler::nitscheParameters(const solidState& s) const
+{
+    std::vector<double> length(pc_.nElements(), 0.0), gamma(pc_.nElements(), 0.0);
+    const auto patchD = patchDisplacements(s.D);
+    for (std::size_t i = 0; i < rules_.size(); ++i)
+    {
+        const auto* rule = rules_[i];
+        if (!rule || (rule->type != boundaryRule::kind::fixedValue
+                   && rule->type != boundaryRule::kind::fixedNormal)) continue;
+        const auto& seg = pc_.segments()[i];
+        length[seg.element] += currentSegment(currentTriangle(seg.element, patchD), seg).length;
+    }
+    for (label e = 0; e < label(pc_.nElements()); ++e)
+    {
+        if (length[e] == 0) continue;
+        const auto T = currentTriangle(e, patchD);
+        const double scale = manifoldElement::signedArea(T)
+            /manifoldElement::signedArea(referenceTriangle(e));
+        const double area = pc_.elements()[e].moments.area*scale;
+        gamma[e] = nitscheSafety*nitscheBound*materials_[e].lambdaMax*length[e]/area;
+    }
+    return gamma;
+}
+
+
+void nmmAssembler::addSegments
+(
+    const solidState& s,
+    double t1,
+    triplets& K,
+    Eigen::VectorXd& f
+) const
+{
+    const auto patchD = patchDisplacements(s.D);
+    const auto gamma = nitscheParameters(s);
+    for (std::size_t i = 0; i < rules_.size(); ++i)
+    {
+        const boundaryRule* rule = rules_[i];
+        if (!rule || rule->type == boundaryRule::kind::tractionFree) continue;
+        const auto& seg = pc_.segments()[i];
+        const label e = seg.element;
+        const auto T = currentTriangle(e, patchD);
+        const auto T0 = referenceTriangle(e);
+        const auto g = currentSegment(T, seg);
+        if (g.length == 0) continue;
+
+        const Eigen::VectorXd de = elementDisplacements(e, s.D);
+        const matrix23 Pn = tractionMatrix(g.normal);
+        const Eigen::Matrix<double, 2, 6> tractionOfD
+            = Pn*materials_[e].D*manifoldElement::strainMatrix(T);
+        const Eigen::Vector2d sigmaN = Pn*s.sigma[e].head<3>();
+
+        matrix66 Ks = matrix66::Zero();
+        vector6 fs = vector6::Zero();
+        for (int qp = 0; qp < 3; ++qp)
+        {
+            const baryPoint lambda = (1 - gaussPoints[qp])*seg.p + gaussPoints[qp]*seg.q;
+            const double w = gaussWeights[qp]*g.length*thickness_;
+            const matrix26 N = weightMatrix(lambda);
+            const Eigen::Vector2d X = manifoldElement::toCartesian(T0, lambda);
+
+            switch (rule->type)
+            {
+                case boundaryRule::kind::traction:
+                {
+                    const Eigen::Vector2d tr = rule->vectorValue(X, t1)
+                        - rule->scalarValue(X, t1)*g.normal;
+                    fs += w*N.transpose()*tr;
+                    break;
+                }
+                case boundaryRule::kind::fixedValue:
+                {
+                    const Eigen::Vector2d r = rule->vectorValue(X, t1) - N*de;
+                    Ks += w*(-N.transpose()*tractionOfD - tractionOfD.transpose()*N
+                        + gamma[e]*N.transpose()*N);
+                    fs += w*(N.transpose()*sigmaN
+                        + (tractionOfD.transpose() + gamma[e]*N.transpose())*r);
+                    break;
+                }
+                case boundaryRule::kind::fixedNormal:
+                {
+                    const Eigen::Matrix<double, 1, 6> nN = g.normal.transpose()*N;
+                    const Eigen::Matrix<double, 1, 6> nT = g.normal.transpose()*tractionOfD;
+                    const double r = rule->scalarValue(X, t1) - nN*de;
+                    Ks += w*(-nN.transpose()*nT - nT.transpose()*nN
+                        + gamma[e]*nN.transpose()*nN);
+                    fs += w*(nN.transpose()*g.normal.dot(sigmaN)
+                        + (nT.transpose() + gamma[e]*nN.transpose())*r);
+                    break;
+                }
+                case boundaryRule::kind::tractionFree: break;
+            }
+        }
+        scatter(e, Ks, K);
+        scatter(e, fs, f);
+    }
+}
+
+
+void nmmAssembler::buildMass()
+{
+    triplets M;
+    for (label e = 0; e < label(pc_.nElements()); ++e)
+    {
+        scatter
+        (
+            e,
+            manifoldElement::mass(pc_.elements()[e].moments, materials_[e].rho, thickness_),
+            M
+        );
+    }
+    M_.resize(Eigen::Index(nUnknowns()), Eigen::Index(nUnknowns()));
+    M_.setFromTriplets(M.begin(), M.end());
+}
+
+
+nmmAssembler::system nmmAssembler::assemble
+(
+    const solidState& s,
+    double dt,
+    const timeScheme& scheme
+) const
+{
+    const double t1 = s.time + dt;
+    const Eigen::Index n = Eigen::Index(nUnknowns());
+    triplets K;
+    system sys;
+    sys.f = Eigen::VectorXd::Zero(n);
+    addElements(s, K, sys.f);
+    addBodyForce(sys.f);
+    addSegments(s, t1, K, sys.f);
+
+    sys.K.resize(n, n);
+    sys.K.setFromTriplets(K.begin(), K.end());
+    if (scheme.dynamic())
+    {
+        sys.K += scheme.massFactor(dt)*M_;
+        sys.f += M_*(scheme.velocityFactor(dt)*s.V + scheme.accelerationFactor()*s.A);
+    }
+    return sys;
+}
+
+} // End namespace nmm
