@@ -1,6 +1,7 @@
 #include "nmmSolid/boundary/boundaryConditions/boundaryConditions.H"
 
 #include "nmmSolid/global/fatalError/fatalError.H"
+#include "nmmSolid/io/dictionary/dimensionSet.H"
 
 #include <algorithm>
 #include <ostream>
@@ -23,24 +24,6 @@ std::vector<std::string> typeNames()
     std::vector<std::string> names;
     for (bcType t : allTypes) names.push_back(bcTypeName(t));
     return names;
-}
-
-
-//- "[0 1 0 0 0 0 0]": the seven exponents of a length
-void checkDimensions(const entry& e)
-{
-    static const double length[7] = {0, 1, 0, 0, 0, 0, 0};
-    const tokenList& s = e.isDict() ? tokenList{} : e.stream();
-    bool ok = s.size() == 9 && s.front().isPunct('[') && s.back().isPunct(']');
-    for (std::size_t i = 0; ok && i < 7; ++i)
-    {
-        ok = s[i + 1].isNumber() && s[i + 1].scalar == length[i];
-    }
-    if (!ok)
-    {
-        throw e.error("the dimensions of D are those of a length,"
-            " [0 1 0 0 0 0 0]");
-    }
 }
 
 
@@ -255,7 +238,10 @@ boundaryConditions boundaryConditions::read
 void boundaryConditions::checkTopLevel(const dictionary& D) const
 {
     keywords().validate(D);
-    if (const entry* e = D.findEntry("dimensions")) checkDimensions(*e);
+    if (const entry* e = D.findEntry("dimensions"))
+    {
+        checkDimensions(*e, {0, 1, 0, 0, 0, 0, 0}, "a length (D is a displacement)");
+    }
     if (const entry* e = D.findEntry("internalField"))
     {
         checkZeroUniform(*e, "internalField");
