@@ -85,6 +85,14 @@ TEST(compiledExpression, compiledOnceEvaluatedManyTimes)
 }
 
 
+TEST(compiledExpression, oneValuePerVariable)
+{
+    const compiledExpression e("x + y", xyt);
+    EXPECT_THROW(e.evaluate({1.0, 2.0}), std::invalid_argument);
+    EXPECT_DOUBLE_EQ(e.evaluate(std::vector<double>{1, 2, 0}).v[0], 3.0);
+}
+
+
 TEST(compiledExpression, knowsWhichVariablesItUses)
 {
     const compiledExpression e("2*t", xyt);

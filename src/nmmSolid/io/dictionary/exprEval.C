@@ -628,6 +628,17 @@ bool compiledExpression::uses(std::string_view variable) const
 }
 
 
+void compiledExpression::checkCount(std::size_t n) const
+{
+    if (n != variables_.size())
+    {
+        throw std::invalid_argument("expression \"" + text_ + "\" has "
+            + std::to_string(variables_.size()) + " variable(s), given "
+            + std::to_string(n) + " value(s)");
+    }
+}
+
+
 exprValue compiledExpression::evaluate(const double* values) const
 {
     // The usual expression needs a handful of stack slots
