@@ -1,10 +1,9 @@
 #include "nmmSolid/io/dictionary/exprEval.H"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <functional>
-#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,28 +14,103 @@ namespace nmm
 namespace
 {
 
-exprValue scalarValue(double x)
+//- Postfix operations; values are pushed on and popped off a stack
+enum class op : std::uint8_t
 {
-    exprValue r;
-    r.v[0] = x;
-    return r;
+    number, variable, makeVector, negate, logicalNot,
+    add, subtract, multiply, divide, modulo,
+    less, lessEqual, greater, greaterEqual, equal, notEqual,
+    logicalAnd, logicalOr, select, call1, call2, minimum, maximum,
+    magVector, magSqrVector
+};
+
+using instruction = compiledExpression::instruction;
+
+instruction make(op o)
+{
+    instruction i;
+    i.op = static_cast<std::uint8_t>(o);
+    return i;
 }
 
-class evaluator
+using scalarFunction = double (*)(double);
+
+struct namedFunction
+{
+    const char* name;
+    scalarFunction f;
+};
+
+// Captureless lambdas: plain function pointers, called without overhead
+const namedFunction oneArgument[] =
+{
+    {"sin", [](double x) { return std::sin(x); }},
+    {"cos", [](double x) { return std::cos(x); }},
+    {"tan", [](double x) { return std::tan(x); }},
+    {"asin", [](double x) { return std::asin(x); }},
+    {"acos", [](double x) { return std::acos(x); }},
+    {"atan", [](double x) { return std::atan(x); }},
+    {"sinh", [](double x) { return std::sinh(x); }},
+    {"cosh", [](double x) { return std::cosh(x); }},
+    {"tanh", [](double x) { return std::tanh(x); }},
+    {"exp", [](double x) { return std::exp(x); }},
+    {"log", [](double x) { return std::log(x); }},
+    {"log10", [](double x) { return std::log10(x); }},
+    {"sqrt", [](double x) { return std::sqrt(x); }},
+    {"cbrt", [](double x) { return std::cbrt(x); }},
+    {"mag", [](double x) { return std::fabs(x); }},
+    {"abs", [](double x) { return std::fabs(x); }},
+    {"sqr", [](double x) { return x * x; }},
+    {"magSqr", [](double x) { return x * x; }},
+    {"floor", [](double x) { return std::floor(x); }},
+    {"ceil", [](double x) { return std::ceil(x); }},
+    {"round", [](double x) { return std::round(x); }},
+    {"sign", [](double x) { return x < 0 ? -1.0 : 1.0; }},
+    {"degToRad", [](double x) { return x * M_PI / 180.0; }},
+    {"radToDeg", [](double x) { return x * 180.0 / M_PI; }},
+};
+
+scalarFunction findOneArgument(const std::string& name)
+{
+    for (const auto& f : oneArgument)
+    {
+        if (name == f.name) return f.f;
+    }
+    return nullptr;
+}
+
+using binaryFunction = double (*)(double, double);
+
+binaryFunction findTwoArguments(const std::string& name)
+{
+    if (name == "pow") return [](double a, double b) { return std::pow(a, b); };
+    if (name == "atan2") return [](double a, double b) { return std::atan2(a, b); };
+    if (name == "hypot") return [](double a, double b) { return std::hypot(a, b); };
+    return nullptr;
+}
+
+
+//- Recursive descent over the text, emitting postfix code; a stack of
+//  the kinds (scalar or vector) of the values the code leaves checks types
+class compiler
 {
     std::string_view s_;
+    const std::vector<std::string>& variables_;
     std::size_t pos_ = 0;
     int depth_ = 0;
+    std::vector<instruction> code_;
+    std::vector<bool> kinds_;            // true: vector
+    std::size_t maxDepth_ = 0;
 
     // Bounded nesting: deep input must fail cleanly, not exhaust the stack
     struct nesting
     {
-        evaluator& e;
-        explicit nesting(evaluator& ev) : e(ev)
+        compiler& c;
+        explicit nesting(compiler& cc) : c(cc)
         {
-            if (++e.depth_ > 256) e.fail("expression nested too deeply");
+            if (++c.depth_ > 256) c.fail("expression nested too deeply");
         }
-        ~nesting() { --e.depth_; }
+        ~nesting() { --c.depth_; }
     };
 
     [[noreturn]] void fail(const std::string& what) const
@@ -53,12 +127,12 @@ class evaluator
         }
     }
 
-    bool accept(std::string_view op)
+    bool accept(std::string_view o)
     {
         skip();
-        if (s_.substr(pos_, op.size()) == op)
+        if (s_.substr(pos_, o.size()) == o)
         {
-            pos_ += op.size();
+            pos_ += o.size();
             return true;
         }
         return false;
@@ -72,36 +146,49 @@ class evaluator
         }
     }
 
-    double scalar(const exprValue& a, const char* what)
+    // Code emission with the kind of value it leaves
+
+    void emit(const instruction& i, std::size_t pops, bool resultIsVector)
     {
-        if (a.isVector) fail(std::string(what) + " needs a scalar, not a vector");
-        return a.v[0];
+        code_.push_back(i);
+        kinds_.resize(kinds_.size() - pops);
+        kinds_.push_back(resultIsVector);
+        maxDepth_ = std::max(maxDepth_, kinds_.size());
     }
 
-    exprValue combine(const exprValue& a, const exprValue& b, char op)
+    bool top(std::size_t fromTop = 0) const
     {
-        exprValue r;
-        if (op == '+' || op == '-')
+        return kinds_[kinds_.size() - 1 - fromTop];
+    }
+
+    void needScalars(std::size_t n, const std::string& what)
+    {
+        for (std::size_t i = 0; i < n; ++i)
         {
-            if (a.isVector != b.isVector) fail("cannot add a scalar and a vector");
-            r.isVector = a.isVector;
-            for (int i = 0; i < 3; ++i) r.v[i] = op == '+' ? a.v[i] + b.v[i] : a.v[i] - b.v[i];
-            return r;
+            if (top(i)) fail(what + " needs a scalar, not a vector");
         }
-        if (a.isVector && b.isVector) fail("cannot multiply or divide two vectors");
-        if (op == '/' && b.isVector) fail("cannot divide by a vector");
-        if (op == '%' && (a.isVector || b.isVector)) fail("'%' needs scalars");
-        const exprValue& vec = a.isVector ? a : b;
-        const double k = a.isVector ? b.v[0] : a.v[0];
-        r.isVector = a.isVector || b.isVector;
-        for (int i = 0; i < (r.isVector ? 3 : 1); ++i)
+    }
+
+    void binary(char o)
+    {
+        const bool b = top(0), a = top(1);
+        if (o == '+' || o == '-')
         {
-            const double x = r.isVector ? vec.v[i] : a.v[0];
-            if (op == '*') r.v[i] = r.isVector ? x * k : a.v[0] * b.v[0];
-            else if (op == '/') r.v[i] = x / b.v[0];
-            else r.v[i] = std::fmod(a.v[0], b.v[0]);
+            if (a != b) fail("cannot add a scalar and a vector");
+            emit(make(o == '+' ? op::add : op::subtract), 2, a);
+            return;
         }
-        return r;
+        if (a && b) fail("cannot multiply or divide two vectors");
+        if (o == '/' && b) fail("cannot divide by a vector");
+        if (o == '%' && (a || b)) fail("'%' needs scalars");
+        const op code = o == '*' ? op::multiply : o == '/' ? op::divide : op::modulo;
+        emit(make(code), 2, a || b);
+    }
+
+    void logical(op code, const char* what)
+    {
+        needScalars(2, what);
+        emit(make(code), 2, false);
     }
 
     double number()
@@ -125,87 +212,116 @@ class evaluator
         return std::string(s_.substr(start, pos_ - start));
     }
 
-    exprValue call(const std::string& name, const std::vector<exprValue>& args)
+    void pushNumber(double x)
     {
-        if (name == "vector")
-        {
-            if (args.size() != 3) fail("vector() takes 3 components");
-            exprValue r;
-            r.isVector = true;
-            for (int i = 0; i < 3; ++i) r.v[i] = scalar(args[i], "vector()");
-            return r;
-        }
-        if ((name == "mag" || name == "magSqr") && args.size() == 1 && args[0].isVector)
-        {
-            const auto& v = args[0].v;
-            const double m2 = v[0]*v[0] + v[1]*v[1] + v[2]*v[2];
-            return scalarValue(name == "mag" ? std::sqrt(m2) : m2);
-        }
-        std::vector<double> a;
-        for (const auto& x : args) a.push_back(scalar(x, (name + "()").c_str()));
-        return scalarValue(callScalar(name, a));
+        instruction i = make(op::number);
+        i.value = x;
+        emit(i, 0, false);
     }
 
-    double callScalar(const std::string& name, const std::vector<double>& a)
+    // Calls (the arguments' code is emitted already)
+
+    void callVector(std::size_t nArgs)
     {
-        using f1 = double (*)(double);
-        static const std::map<std::string, f1> one =
-        {
-            {"sin", [](double x) { return std::sin(x); }},
-            {"cos", [](double x) { return std::cos(x); }},
-            {"tan", [](double x) { return std::tan(x); }},
-            {"asin", [](double x) { return std::asin(x); }},
-            {"acos", [](double x) { return std::acos(x); }},
-            {"atan", [](double x) { return std::atan(x); }},
-            {"sinh", [](double x) { return std::sinh(x); }},
-            {"cosh", [](double x) { return std::cosh(x); }},
-            {"tanh", [](double x) { return std::tanh(x); }},
-            {"exp", [](double x) { return std::exp(x); }},
-            {"log", [](double x) { return std::log(x); }},
-            {"log10", [](double x) { return std::log10(x); }},
-            {"sqrt", [](double x) { return std::sqrt(x); }},
-            {"cbrt", [](double x) { return std::cbrt(x); }},
-            {"mag", [](double x) { return std::fabs(x); }},
-            {"abs", [](double x) { return std::fabs(x); }},
-            {"sqr", [](double x) { return x * x; }},
-            {"magSqr", [](double x) { return x * x; }},
-            {"floor", [](double x) { return std::floor(x); }},
-            {"ceil", [](double x) { return std::ceil(x); }},
-            {"round", [](double x) { return std::round(x); }},
-            {"sign", [](double x) { return x < 0 ? -1.0 : 1.0; }},
-            {"degToRad", [](double x) { return x * M_PI / 180.0; }},
-            {"radToDeg", [](double x) { return x * 180.0 / M_PI; }},
-        };
-        auto arity = [&](std::size_t n)
-        {
-            if (a.size() != n)
-            {
-                fail(name + "() takes " + std::to_string(n) + " argument(s), "
-                    + "given " + std::to_string(a.size()));
-            }
-        };
-        if (auto it = one.find(name); it != one.end())
-        {
-            arity(1);
-            return it->second(a[0]);
-        }
-        if (name == "pi") { arity(0); return M_PI; }
-        if (name == "e") { arity(0); return M_E; }
-        if (name == "pow") { arity(2); return std::pow(a[0], a[1]); }
-        if (name == "atan2") { arity(2); return std::atan2(a[0], a[1]); }
-        if (name == "hypot") { arity(2); return std::hypot(a[0], a[1]); }
-        if (name == "min" || name == "max")
-        {
-            if (a.empty()) fail(name + "() needs arguments");
-            double r = a[0];
-            for (double v : a) r = (name == "min") ? std::min(r, v) : std::max(r, v);
-            return r;
-        }
-        fail("unknown function '" + name + "' (#eval evaluates scalar "
-            "expressions only)");
+        if (nArgs != 3) fail("vector() takes 3 components");
+        needScalars(3, "vector()");
+        emit(make(op::makeVector), 3, true);
     }
 
-    exprValue primary()
+    void arity(const std::string& name, std::size_t given, std::size_t n)
+    {
+        if (given != n)
+        {
+            fail(name + "() takes " + std::to_string(n) + " argument(s), "
+                + "given " + std::to_string(given));
+        }
+    }
+
+    void callScalar(const std::string& name, std::size_t nArgs)
+    {
+        needScalars(nArgs, name + "()");
+        if (const scalarFunction f = findOneArgument(name))
+        {
+            arity(name, nArgs, 1);
+            instruction i = make(op::call1);
+            i.f1 = f;
+            emit(i, 1, false);
+        }
+        else if (const binaryFunction f = findTwoArguments(name))
+        {
+            arity(name, nArgs, 2);
+            instruction i = make(op::call2);
+            i.f2 = f;
+            emit(i, 2, false);
+        }
+        else if (name == "pi" || name == "e")
+        {
+            arity(name, nArgs, 0);
+            pushNumber(name == "pi" ? M_PI : M_E);
+        }
+        else if (name == "min" || name == "max")
+        {
+            if (nArgs == 0) fail(name + "() needs arguments");
+            instruction i = make(name == "min" ? op::minimum : op::maximum);
+            i.argc = static_cast<std::uint8_t>(std::min<std::size_t>(nArgs, 255));
+            if (nArgs > 255) fail(name + "() takes at most 255 arguments");
+            emit(i, nArgs, false);
+        }
+        else
+        {
+            fail("unknown function '" + name + "'");
+        }
+    }
+
+    void call(const std::string& name, std::size_t nArgs)
+    {
+        if (name == "vector") return callVector(nArgs);
+        if ((name == "mag" || name == "magSqr") && nArgs == 1 && top())
+        {
+            emit(make(name == "mag" ? op::magVector : op::magSqrVector), 1, false);
+            return;
+        }
+        callScalar(name, nArgs);
+    }
+
+    void variable(const std::string& name, std::size_t nameStart)
+    {
+        const auto it = std::find(variables_.begin(), variables_.end(), name);
+        if (it == variables_.end())
+        {
+            if (variables_.empty()) fail("expected '('");
+            pos_ = nameStart;
+            std::string known;
+            for (const auto& v : variables_) known += " " + v;
+            fail("unknown variable '" + name + "' (variables:" + known + ")");
+        }
+        instruction i = make(op::variable);
+        i.index = static_cast<std::uint32_t>(it - variables_.begin());
+        emit(i, 0, false);
+    }
+
+    void functionOrVariable()
+    {
+        const std::size_t nameStart = pos_;
+        const std::string name = identifier();
+        if (name == "true" || name == "false") return pushNumber(name == "true");
+        skip();
+        if (pos_ >= s_.size() || s_[pos_] != '(') return variable(name, nameStart);
+        expect('(');
+        std::size_t nArgs = 0;
+        if (!accept(")"))
+        {
+            do { ternary(); ++nArgs; } while (accept(","));
+            expect(')');
+        }
+        // Errors about the call point at its name
+        const std::size_t end = pos_;
+        pos_ = nameStart;
+        call(name, nArgs);
+        pos_ = end;
+    }
+
+    void primary()
     {
         skip();
         if (pos_ >= s_.size()) fail("unexpected end of expression");
@@ -213,144 +329,350 @@ class evaluator
         if (c == '(')
         {
             ++pos_;
-            const exprValue v = ternary();
+            ternary();
             expect(')');
-            return v;
         }
-        if (std::isdigit(static_cast<unsigned char>(c)) || c == '.')
+        else if (std::isdigit(static_cast<unsigned char>(c)) || c == '.')
         {
-            return scalarValue(number());
+            pushNumber(number());
         }
-        if (std::isalpha(static_cast<unsigned char>(c)) || c == '_')
+        else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_')
         {
-            const std::size_t nameStart = pos_;
-            const std::string name = identifier();
-            if (name == "true") return scalarValue(1);
-            if (name == "false") return scalarValue(0);
-            expect('(');
-            std::vector<exprValue> args;
-            if (!accept(")"))
-            {
-                do { args.push_back(ternary()); } while (accept(","));
-                expect(')');
-            }
-            // Errors about the call point at its name
-            const std::size_t end = pos_;
-            pos_ = nameStart;
-            exprValue r = call(name, args);
-            pos_ = end;
-            return r;
+            functionOrVariable();
         }
-        fail(std::string("unexpected '") + c + "'");
+        else
+        {
+            fail(std::string("unexpected '") + c + "'");
+        }
     }
 
-    exprValue unary()
+    void unary()
     {
         nesting guard(*this);
         if (accept("-"))
         {
-            exprValue v = unary();
-            for (double& x : v.v) x = -x;
-            return v;
+            unary();
+            emit(make(op::negate), 1, top());
         }
-        if (accept("+")) return unary();
-        if (accept("!")) return scalarValue(scalar(unary(), "'!'") == 0 ? 1 : 0);
-        return primary();
+        else if (accept("+"))
+        {
+            unary();
+        }
+        else if (accept("!"))
+        {
+            unary();
+            needScalars(1, "'!'");
+            emit(make(op::logicalNot), 1, false);
+        }
+        else
+        {
+            primary();
+        }
     }
 
-    exprValue product()
+    void product()
     {
-        exprValue v = unary();
+        unary();
         while (true)
         {
-            if (accept("*")) v = combine(v, unary(), '*');
-            else if (accept("/")) v = combine(v, unary(), '/');
-            else if (accept("%")) v = combine(v, unary(), '%');
-            else return v;
+            char o = 0;
+            if (accept("*")) o = '*';
+            else if (accept("/")) o = '/';
+            else if (accept("%")) o = '%';
+            else return;
+            unary();
+            binary(o);
         }
     }
 
-    exprValue sum()
+    void sum()
     {
-        exprValue v = product();
+        product();
         while (true)
         {
-            if (accept("+")) v = combine(v, product(), '+');
-            else if (accept("-")) v = combine(v, product(), '-');
-            else return v;
+            char o = 0;
+            if (accept("+")) o = '+';
+            else if (accept("-")) o = '-';
+            else return;
+            product();
+            binary(o);
         }
     }
 
-    exprValue comparison()
+    void comparison()
     {
-        const exprValue first = sum();
-        static const char* ops[] = {"<=", ">=", "==", "!=", "<", ">"};
-        for (const char* op : ops)
+        sum();
+        static const std::pair<const char*, op> ops[] =
         {
-            if (!accept(op)) continue;
-            const double a = scalar(first, "a comparison");
-            const double b = scalar(sum(), "a comparison");
-            const std::string o(op);
-            const bool r = o == "<=" ? a <= b : o == ">=" ? a >= b
-                : o == "==" ? a == b : o == "!=" ? a != b : o == "<" ? a < b : a > b;
-            return scalarValue(r ? 1 : 0);
+            {"<=", op::lessEqual}, {">=", op::greaterEqual}, {"==", op::equal},
+            {"!=", op::notEqual}, {"<", op::less}, {">", op::greater}
+        };
+        for (const auto& [text, code] : ops)
+        {
+            if (!accept(text)) continue;
+            sum();
+            logical(code, "a comparison");
+            return;
         }
-        return first;
     }
 
-    exprValue conjunction()
+    void conjunction()
     {
-        exprValue v = comparison();
+        comparison();
         while (accept("&&"))
         {
-            const bool l = scalar(v, "'&&'") != 0;
-            const bool r = scalar(comparison(), "'&&'") != 0;
-            v = scalarValue(l && r ? 1 : 0);
+            comparison();
+            logical(op::logicalAnd, "'&&'");
         }
-        return v;
     }
 
-    exprValue disjunction()
+    void disjunction()
     {
-        exprValue v = conjunction();
+        conjunction();
         while (accept("||"))
         {
-            const bool l = scalar(v, "'||'") != 0;
-            const bool r = scalar(conjunction(), "'||'") != 0;
-            v = scalarValue(l || r ? 1 : 0);
+            conjunction();
+            logical(op::logicalOr, "'||'");
         }
-        return v;
     }
 
-    exprValue ternary()
+    void ternary()
     {
         nesting guard(*this);
-        const exprValue c = disjunction();
-        if (!accept("?")) return c;
-        const exprValue a = ternary();
+        disjunction();
+        if (!accept("?")) return;
+        const std::size_t at = pos_;
+        ternary();
         expect(':');
-        const exprValue b = ternary();
-        return scalar(c, "'?:'") != 0 ? a : b;
+        ternary();
+        if (top(2))
+        {
+            pos_ = at;
+            fail("'?:' needs a scalar, not a vector");
+        }
+        if (top(0) != top(1))
+        {
+            pos_ = at;
+            fail("the two branches of '?:' are a scalar and a vector");
+        }
+        emit(make(op::select), 3, top());
     }
 
 public:
-    explicit evaluator(std::string_view s) : s_(s) {}
+    compiler(std::string_view s, const std::vector<std::string>& variables)
+    :
+        s_(s), variables_(variables)
+    {}
 
-    exprValue run()
+    void run()
     {
-        const exprValue v = ternary();
+        ternary();
         skip();
         if (pos_ != s_.size()) fail("unexpected text");
-        return v;
     }
+
+    std::vector<instruction>& code() { return code_; }
+    bool isVector() const { return kinds_.back(); }
+    std::size_t maxDepth() const { return maxDepth_; }
 };
+
+
+// Evaluation
+
+exprValue scalarValue(double x)
+{
+    exprValue r;
+    r.v[0] = x;
+    return r;
+}
+
+void scale(exprValue& a, const exprValue& b, op o)
+{
+    const double k = a.isVector ? b.v[0] : a.v[0];
+    if (o == op::multiply && !a.isVector && b.isVector) a = b;
+    const int n = a.isVector ? 3 : 1;
+    for (int i = 0; i < n; ++i)
+    {
+        if (o == op::multiply) a.v[i] = a.isVector ? a.v[i]*k : a.v[0]*b.v[0];
+        else if (o == op::divide) a.v[i] /= b.v[0];
+        else a.v[0] = std::fmod(a.v[0], b.v[0]);
+    }
+}
+
+double compare(op o, double a, double b)
+{
+    switch (o)
+    {
+        case op::less: return a < b;
+        case op::lessEqual: return a <= b;
+        case op::greater: return a > b;
+        case op::greaterEqual: return a >= b;
+        case op::equal: return a == b;
+        case op::notEqual: return a != b;
+        case op::logicalAnd: return a != 0 && b != 0;
+        default: return a != 0 || b != 0;
+    }
+}
+
+//- Apply an operation that pops two values and pushes one
+void applyBinary(op o, exprValue& a, const exprValue& b)
+{
+    if (o == op::add || o == op::subtract)
+    {
+        for (int i = 0; i < 3; ++i) a.v[i] = o == op::add ? a.v[i] + b.v[i] : a.v[i] - b.v[i];
+    }
+    else if (o == op::multiply || o == op::divide || o == op::modulo)
+    {
+        scale(a, b, o);
+    }
+    else
+    {
+        a = scalarValue(compare(o, a.v[0], b.v[0]));
+    }
+}
+
+//- Run the program on a stack of at least maxDepth values
+exprValue run
+(
+    const std::vector<instruction>& program,
+    const double* variables,
+    exprValue* stack
+)
+{
+    std::size_t n = 0;
+    for (const instruction& in : program)
+    {
+        const op o = static_cast<op>(in.op);
+        switch (o)
+        {
+            case op::number: stack[n++] = scalarValue(in.value); break;
+            case op::variable: stack[n++] = scalarValue(variables[in.index]); break;
+            case op::makeVector:
+                n -= 2;
+                stack[n-1].isVector = true;
+                stack[n-1].v = {stack[n-1].v[0], stack[n].v[0], stack[n+1].v[0]};
+                break;
+            case op::negate: for (double& x : stack[n-1].v) x = -x; break;
+            case op::logicalNot: stack[n-1] = scalarValue(stack[n-1].v[0] == 0); break;
+            case op::call1: stack[n-1].v[0] = in.f1(stack[n-1].v[0]); break;
+            case op::call2:
+                --n;
+                stack[n-1].v[0] = in.f2(stack[n-1].v[0], stack[n].v[0]);
+                break;
+            case op::minimum:
+            case op::maximum:
+            {
+                const std::size_t first = n - in.argc;
+                for (std::size_t k = first + 1; k < n; ++k)
+                {
+                    const double x = stack[k].v[0];
+                    double& r = stack[first].v[0];
+                    r = o == op::minimum ? std::min(r, x) : std::max(r, x);
+                }
+                n = first + 1;
+                break;
+            }
+            case op::magVector:
+            case op::magSqrVector:
+            {
+                const auto& v = stack[n-1].v;
+                const double m2 = v[0]*v[0] + v[1]*v[1] + v[2]*v[2];
+                stack[n-1] = scalarValue(o == op::magVector ? std::sqrt(m2) : m2);
+                break;
+            }
+            case op::select:
+                n -= 2;
+                stack[n-1] = stack[n-1].v[0] != 0 ? stack[n] : stack[n+1];
+                break;
+            default:
+                --n;
+                applyBinary(o, stack[n-1], stack[n]);
+                break;
+        }
+    }
+    return stack[0];
+}
 
 } // End anonymous namespace
 
 
+compiledExpression::compiledExpression
+(
+    std::string_view text,
+    std::vector<std::string> variables
+)
+:
+    text_(text),
+    variables_(std::move(variables)),
+    used_(variables_.size(), false)
+{
+    compiler c(text_, variables_);
+    c.run();
+    program_ = std::move(c.code());
+    isVector_ = c.isVector();
+    maxDepth_ = c.maxDepth();
+    for (const instruction& i : program_)
+    {
+        if (static_cast<op>(i.op) == op::variable) used_[i.index] = true;
+    }
+}
+
+
+bool compiledExpression::uses(std::string_view variable) const
+{
+    for (std::size_t i = 0; i < variables_.size(); ++i)
+    {
+        if (variables_[i] == variable) return used_[i];
+    }
+    return false;
+}
+
+
+void compiledExpression::checkCount(std::size_t n) const
+{
+    if (n != variables_.size())
+    {
+        throw std::invalid_argument("expression \"" + text_ + "\" has "
+            + std::to_string(variables_.size()) + " variable(s), given "
+            + std::to_string(n) + " value(s)");
+    }
+}
+
+
+exprValue compiledExpression::evaluate(const double* values) const
+{
+    // The usual expression needs a handful of stack slots
+    constexpr std::size_t small = 16;
+    if (maxDepth_ <= small)
+    {
+        exprValue stack[small];
+        return run(program_, values, stack);
+    }
+    std::vector<exprValue> stack(maxDepth_);
+    return run(program_, values, stack.data());
+}
+
+
 exprValue evaluateExpression(std::string_view expression)
 {
-    return evaluator(expression).run();
+    return compiledExpression(expression).evaluate(nullptr);
+}
+
+
+exprValue evaluateExpression
+(
+    std::string_view expression,
+    const std::map<std::string, double>& variables
+)
+{
+    std::vector<std::string> names;
+    std::vector<double> values;
+    for (const auto& [name, value] : variables)
+    {
+        names.push_back(name);
+        values.push_back(value);
+    }
+    return compiledExpression(expression, std::move(names)).evaluate(values);
 }
 
 } // End namespace nmm

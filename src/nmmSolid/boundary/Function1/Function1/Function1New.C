@@ -1,6 +1,7 @@
 #include "nmmSolid/boundary/Function1/Function1/Function1.H"
 
 #include "nmmSolid/boundary/Function1/constant/constant.H"
+#include "nmmSolid/boundary/Function1/expression/expression.H"
 #include "nmmSolid/boundary/Function1/linearRamp/linearRamp.H"
 #include "nmmSolid/boundary/Function1/polynomial/polynomial.H"
 #include "nmmSolid/boundary/Function1/sine/sine.H"
@@ -62,6 +63,8 @@ bool addTypes()
         &constant<Type>::keywords());
     selector::add("uniform", inlineOrDictionary<constant, Type>(),
         &constant<Type>::keywords());
+    selector::add("expression", inlineOrDictionary<expression, Type>(),
+        &expression<Type>::keywords());
     selector::add("table", inlineOrDictionary<table, Type>(),
         &table<Type>::keywords());
     selector::add("polynomial", inlineOrDictionary<polynomial, Type>(),
@@ -174,7 +177,8 @@ std::unique_ptr<Function1<Type>> fromTokens
     if (!coeffs && selector::find(typeName))
     {
         const bool hasInline = typeName == "constant" || typeName == "uniform"
-            || typeName == "table" || typeName == "polynomial";
+            || typeName == "table" || typeName == "polynomial"
+            || typeName == "expression";
         throw e.error("'" + key + " " + typeName + ";' gives no "
             + (hasInline ? "value or " : "") + "coefficients; write "
             + (hasInline ? key + " " + typeName + " <value>; or " : "")
