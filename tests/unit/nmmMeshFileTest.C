@@ -3,6 +3,8 @@
 #include "nmmSolid/output/hdf5/nmmMeshFile/nmmMeshFile.H"
 #include "nmmSolid/output/hdf5/hdf5File/hdf5File.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
+#include "nmmSolid/geometry/blockGeometry/blockGeometry.H"
+#include "nmmSolid/io/dictionary/dictionary.H"
 
 #include "testTools.H"
 
@@ -189,4 +191,58 @@ TEST(nmmMeshFile, otherVersionRefused)
         EXPECT_NE(msg.find("format version 99"), std::string::npos) << msg;
         EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
     }
+}
+
+
+// A cut mesh (a block with a hole and a crack, a second block beside it)
+// written as nmmMesh writes it and read back: same nodes, triangles and
+// elements, same bits
+TEST(nmmMeshFile, cutMeshRoundTrip)
+{
+    const nmm::dictionary meshDict = nmm::dictionary::parse(R"(
+        blocks
+        (
+            lower { material rock; polygon ((0 0) (1 0) (1 0.5) (0 0.5));
+                    holes ( ((0.3 0.15) (0.3 0.3) (0.45 0.3) (0.45 0.15)) ); }
+            upper { material rock; polygon ((0 0.5) (1 0.5) (1 1) (0 1)); }
+        );
+        joints ( crack { points ((1 0.8) (0.55 0.71) (0.4 0.77)); } );
+        cover { type structured; cellSize 0.1; }
+    )", "nmmMeshDict");
+    const auto geometry = nmm::blockGeometry::read(meshDict);
+    const auto cover = nmm::mathematicalCover::New(meshDict.subDict("cover"), geometry);
+    const physicalCover pc(*cover, geometry, meshDict.subDict("cover"));
+
+    nmm::test::tempDir dir("nmmMeshFile");
+    const auto dictFile = dir.write("system/nmmMeshDict", "// empty\n");
+    const auto file = nmm::nmmMeshFile::fileName(dir.path);
+    nmm::nmmMeshFile::write(file, *cover, pc, nmm::nmmMeshFile::sourceOf(dictFile));
+
+    const auto c = nmm::nmmMeshFile::read(file);
+    EXPECT_EQ(c.from.coverType, cover->type());
+    EXPECT_EQ(c.from.cellSize, cover->cellSize());
+    EXPECT_EQ(c.from.meshDict, dictFile.lexically_normal().string());
+    EXPECT_GT(c.from.meshDictStamp, 0);
+    EXPECT_EQ(c.triangles, cover->triangles());
+    ASSERT_EQ(c.nodes.size(), cover->nNodes());
+    EXPECT_EQ(0, std::memcmp(c.nodes.data(), cover->nodes().data(),
+        cover->nNodes()*sizeof(Eigen::Vector2d)));
+    ASSERT_EQ(c.mesh->nElements(), pc.nElements());
+    ASSERT_EQ(c.mesh->nPatches(), pc.nPatches());
+    ASSERT_EQ(c.mesh->segments().size(), pc.segments().size());
+    for (std::size_t i = 0; i < pc.nElements(); ++i)
+    {
+        const auto& a = pc.elements()[i];
+        const auto& b = c.mesh->elements()[i];
+        ASSERT_EQ(a.loops.size(), b.loops.size());
+        for (std::size_t l = 0; l < a.loops.size(); ++l)
+        {
+            ASSERT_EQ(a.loops[l].size(), b.loops[l].size());
+            EXPECT_EQ(0, std::memcmp(a.loops[l].data(), b.loops[l].data(),
+                a.loops[l].size()*sizeof(baryPoint)));
+        }
+        EXPECT_TRUE(sameBits(a.moments.area, b.moments.area));
+    }
+    EXPECT_EQ(c.unknownPatches, pc.unknownPatches());
+    EXPECT_EQ(c.stats.nCutTriangles, pc.stats().nCutTriangles);
 }

@@ -3,8 +3,9 @@
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/output/hdf5/hdf5File/hdf5File.H"
 
-#include <chrono>
 #include <system_error>
+
+#include <sys/stat.h>
 
 namespace fs = std::filesystem;
 
@@ -91,13 +92,14 @@ nmmMeshFile::source nmmMeshFile::sourceOf(const fs::path& meshDict)
     std::error_code ec;
     s.meshDict = fs::absolute(meshDict, ec).lexically_normal().string();
     if (ec) s.meshDict = meshDict.string();
-    const auto stamp = fs::last_write_time(meshDict, ec);
-    if (!ec)
+    // stat() rather than fs::last_write_time: std::filesystem's clock has
+    // no fixed epoch in C++17, and the stamp must mean the same to any
+    // program that reads the file
+    struct stat st;
+    if (::stat(meshDict.c_str(), &st) == 0)
     {
-        s.meshDictStamp = std::chrono::duration_cast<std::chrono::nanoseconds>
-        (
-            stamp.time_since_epoch()
-        ).count();
+        s.meshDictStamp = std::int64_t(st.st_mtim.tv_sec)*1000000000
+            + std::int64_t(st.st_mtim.tv_nsec);
     }
     return s;
 }
