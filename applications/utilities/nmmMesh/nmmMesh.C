@@ -280,6 +280,20 @@ int run(int argc, char* argv[])
         "Build the covers and manifold elements of a case from system/nmmMeshDict");
     args.addBoolOption("check", "build and check the mesh, write nothing");
     args.addKeywordHelp("system/nmmMeshDict", nmm::blockGeometry::keywords());
+    args.addKeywordHelp("system/nmmMeshDict, each of 'blocks'",
+        nmm::blockGeometry::blockKeywords());
+    args.addKeywordHelp("system/nmmMeshDict, each of 'joints'",
+        nmm::blockGeometry::jointKeywords());
+    args.addKeywordHelp("system/nmmMeshDict, 'cover' (the physical cover's)",
+        nmm::physicalCover::keywords());
+    args.setDocumentation
+    (
+        "Reads system/nmmMeshDict, builds the blocks and joints, the "
+        "mathematical cover and the physical cover, prints a report with "
+        "counts, areas and quality measures, and writes "
+        "constant/nmmMesh/nmmMesh.h5 and VTK/mesh.vtu (not with -check). "
+        "Exit code 1 when the input is wrong or a mesh check fails."
+    );
     if (args.parse(argc, argv) == nmm::argList::parseResult::done) return 0;
     args.printBanner(std::cout);
 
