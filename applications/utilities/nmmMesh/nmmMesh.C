@@ -27,7 +27,7 @@ Description
     blockId, materialId (the position of the block's material in
     constant/mechanicalProperties' 'materials' when that file exists,
     otherwise the order in which materials first appear in 'blocks'),
-    areaRatio, triangle (the cover triangle), patches (the element's three
+    area (the element's, holes subtracted), areaRatio, triangle (the cover triangle), patches (the element's three
     physical patches, 3 components) and hasHoles. A VTK polygon cannot
     have holes, so an element with holes is written by its outer loop
     only and flagged hasHoles = 1: its cell shows the hole filled in.
@@ -145,9 +145,8 @@ nmm::vtkPolygonMesh vtkMesh
 )
 {
     nmm::vtkPolygonMesh mesh;
-    const std::size_t n = pc.nElements();
     std::vector<std::int32_t> blockId, materialId, triangle, patches, hasHoles;
-    std::vector<double> areaRatio;
+    std::vector<double> area, areaRatio;
     for (const auto& e : pc.elements())
     {
         const auto T = nmm::physicalCover::triangleOf(cover, e);
@@ -162,11 +161,12 @@ nmm::vtkPolygonMesh vtkMesh
         triangle.push_back(e.triangle);
         patches.insert(patches.end(), e.patches.begin(), e.patches.end());
         hasHoles.push_back(e.loops.size() > 1 ? 1 : 0);
+        area.push_back(e.moments.area);
         areaRatio.push_back(e.areaRatio);
     }
-    (void)n;
     mesh.addCellData(nmm::vtkDataArray::int32(nmm::vtkFieldNames::blockId, blockId));
     mesh.addCellData(nmm::vtkDataArray::int32(nmm::vtkFieldNames::materialId, materialId));
+    mesh.addCellData(nmm::vtkDataArray::scalar("area", area));
     mesh.addCellData(nmm::vtkDataArray::scalar("areaRatio", areaRatio));
     mesh.addCellData(nmm::vtkDataArray::int32("triangle", triangle));
     mesh.addCellData(nmm::vtkDataArray::int32("patches", 3, patches));
