@@ -3,6 +3,7 @@
 
 Usage:
     checkValidCase.py --nmmMesh <exe> --case <dir> --work <dir> --area <A>
+        [--holes <n>] [--materials <id of block 0> <id of block 1> ...]
 
 The case is copied to <work>, nmmMesh runs there (without -check) and
 must exit with 0, print "Mesh OK." and write constant/nmmMesh/nmmMesh.h5
@@ -10,12 +11,16 @@ and VTK/mesh.vtu. The .vtu is read with vtkXMLUnstructuredGridReader
 (VTK errors and warnings fail the check) and must have:
 
   - as many cells as the report's "elements:", all VTK_POLYGON;
-  - the cell data blockId, materialId, areaRatio, triangle, patches
-    (3 components) and hasHoles;
-  - polygons whose summed area (shoelace formula over the outer loops)
-    equals the material area A of the geometry to 1e-12 relative. The
-    sum is complete only when no element has holes (their cells show the
-    outer loop only), so the case must have none: hasHoles is all 0.
+  - the cell data blockId, materialId, area, areaRatio, triangle,
+    patches (3 components) and hasHoles, with n cells flagged hasHoles
+    (--holes, default 0) and materialId the one given for each block
+    (--materials);
+  - counter-clockwise polygons whose area (shoelace formula) is the
+    cell's 'area' to 1e-12 relative, except for the elements with holes,
+    whose polygon is the outer loop only and must be larger;
+  - summed over the elements (the polygon areas for elements without
+    holes, 'area' for those with holes) the material area A of the
+    geometry, to 1e-12 relative.
 
 Run with /usr/bin/python3: VTK's bindings come from the Debian package
 python3-vtk9 (see tests/vtk).
@@ -43,6 +48,8 @@ def main():
     ap.add_argument("--case", required=True)
     ap.add_argument("--work", required=True)
     ap.add_argument("--area", required=True, type=float)
+    ap.add_argument("--holes", type=int, default=0)
+    ap.add_argument("--materials", type=int, nargs="*")
     args = ap.parse_args()
 
     try:
@@ -93,7 +100,7 @@ def main():
     if grid.GetNumberOfCells() != nElements:
         fail(f"{grid.GetNumberOfCells()} cells, the report says {nElements} elements")
     cd = grid.GetCellData()
-    expected = {"blockId": 1, "materialId": 1, "areaRatio": 1,
+    expected = {"blockId": 1, "materialId": 1, "area": 1, "areaRatio": 1,
                 "triangle": 1, "patches": 3, "hasHoles": 1}
     for name, nc in expected.items():
         a = cd.GetArray(name)
@@ -101,11 +108,18 @@ def main():
             fail(f"no cell data '{name}'")
         if a.GetNumberOfComponents() != nc:
             fail(f"'{name}' has {a.GetNumberOfComponents()} components, expected {nc}")
-    if vtk_to_numpy(cd.GetArray("hasHoles")).any():
-        fail("an element has holes: the polygon areas do not add up to the material")
+    hasHoles = vtk_to_numpy(cd.GetArray("hasHoles"))
+    area = vtk_to_numpy(cd.GetArray("area"))
+    if int(hasHoles.sum()) != args.holes or not set(hasHoles) <= {0, 1}:
+        fail(f"{int(hasHoles.sum())} cells flagged hasHoles, expected {args.holes}")
+    if args.materials is not None:
+        blockId = vtk_to_numpy(cd.GetArray("blockId"))
+        materialId = vtk_to_numpy(cd.GetArray("materialId"))
+        for b, m in zip(blockId, materialId):
+            if args.materials[b] != m:
+                fail(f"a cell of block {b} has materialId {m}, expected {args.materials[b]}")
 
     points = vtk_to_numpy(grid.GetPoints().GetData())
-    total = 0.0
     parts = []
     for c in range(grid.GetNumberOfCells()):
         if grid.GetCellType(c) != 7:
@@ -117,9 +131,18 @@ def main():
             x0, y0 = xy[k]
             x1, y1 = xy[(k + 1) % len(xy)]
             a += x0*y1 - x1*y0
+        a /= 2
         if a <= 0:
-            fail(f"cell {c} is not counter-clockwise (signed area {a/2})")
-        parts.append(a/2)
+            fail(f"cell {c} is not counter-clockwise (signed area {a})")
+        if hasHoles[c]:
+            if not a > area[c]:
+                fail(f"cell {c} has holes but its outer loop ({a}) is not larger "
+                     f"than its area ({area[c]})")
+            parts.append(area[c])
+        else:
+            if abs(a - area[c]) > 1e-12*area[c]:
+                fail(f"cell {c}: polygon area {a}, element area {area[c]}")
+            parts.append(a)
     total = math.fsum(parts)
     rel = abs(total - args.area)/args.area
     print(f"{nElements} cells; polygon area {total!r}, geometry {args.area!r}, "
