@@ -102,6 +102,17 @@ vtkDataArray vtkDataArray::int32(std::string name, std::vector<std::int32_t> v)
 }
 
 
+vtkDataArray vtkDataArray::int32
+(
+    std::string name,
+    int nComponents,
+    std::vector<std::int32_t> v
+)
+{
+    return vtkDataArray(std::move(name), nComponents, std::move(v));
+}
+
+
 vtkDataArray vtkDataArray::int64(std::string name, std::vector<std::int64_t> v)
 {
     return vtkDataArray(std::move(name), 1, std::move(v));
