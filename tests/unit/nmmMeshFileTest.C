@@ -148,7 +148,10 @@ TEST(nmmMeshFile, roundTripBitForBit)
         EXPECT_TRUE(sameBits(a.q, b.q));
         EXPECT_EQ(a.kind, b.kind);
         EXPECT_EQ(a.edge, b.edge);
-        if (a.kind == physicalCover::segmentKind::jointFace) EXPECT_EQ(a.face, b.face);
+        if (a.kind == physicalCover::segmentKind::jointFace)
+        {
+            EXPECT_EQ(a.face, b.face);
+        }
     }
 
     // Extensions and statistics as the written cover had them
