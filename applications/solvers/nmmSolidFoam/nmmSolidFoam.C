@@ -6,10 +6,10 @@ Description
     Numerical Manifold Method solver for deformable geomaterial bodies that
     meet, stick, slide, bond and break apart.
 
-    This version runs the time loop only: it reads and validates
-    system/controlDict, advances time, writes time directories (with
-    uniform/time) and restarts from them. The physics goes into
-    solveStep() below.
+    Each time step is one implicit solve of the NMM equations (static,
+    DDA or Newmark, see nmm::nmmSolidModel). Every write time gets a time
+    directory with uniform/time and the restart state (nmmState.h5) and a
+    VTK frame under VTK/ (see nmm::solidOutput).
 
 Usage
     nmmSolidFoam [-case dir] [-dry-run] [-noFunctionObjects]
@@ -22,9 +22,16 @@ Usage
 #include "nmmSolid/global/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/global/signals/stopSignals.H"
+#include "nmmSolid/boundary/boundaryConditions/boundaryConditions.H"
+#include "nmmSolid/boundary/gravity/gravity.H"
 #include "nmmSolid/io/case/Time/Time.H"
+#include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
+#include "nmmSolid/output/solidOutput/solidOutput.H"
+#include "nmmSolid/output/vtk/vtkWriter/vtkWriter.H"
+#include "nmmSolid/solver/solutionControls/solutionControls.H"
 
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 
 namespace
@@ -64,17 +71,10 @@ nmm::argList makeArgList()
     args.addBoolOption("noFunctionObjects", "Do not execute function objects");
     args.addBoolOption("dry-run", "Read and validate every input, then stop");
     args.addKeywordHelp("system/controlDict", nmm::Time::keywords());
+    args.addKeywordHelp("system/nmmSolution", nmm::solutionControls::keywords());
+    args.addKeywordHelp("0/D, each patch of boundaryField", nmm::boundaryConditions::keywords());
+    args.addKeywordHelp("constant/g", nmm::gravity::keywords());
     return args;
-}
-
-
-//- One step of the physics, from runTime.value() - deltaT to runTime.value()
-void solveStep(const nmm::Time& runTime)
-{
-    // The model (nmmSolidModel) will advance here: assemble, run the
-    // open-close contact iteration, update the state; it may also ask for
-    // a shorter step. Nothing to do until then.
-    static_cast<void>(runTime);
 }
 
 
@@ -82,8 +82,38 @@ void solveStep(const nmm::Time& runTime)
 double proposedDeltaT(const nmm::Time& runTime)
 {
     // Step control (system/nmmSolution) will propose a step from the
-    // physics; until then the controlDict's deltaT
+    // contact physics; until then the controlDict's deltaT
     return std::min(runTime.controlDeltaT(), runTime.maxDeltaT());
+}
+
+
+//- The model, continued from the start time's state on a restart
+std::unique_ptr<nmm::nmmSolidModel> createModel(const nmm::Time& runTime)
+{
+    std::cout << "Create model\n" << std::endl;
+    auto model = nmm::nmmSolidModel::New(runTime.folder());
+    const auto stateDir = runTime.timePath();
+    if (std::filesystem::exists(stateDir/nmm::solidOutput::stateFileName()))
+    {
+        auto state = nmm::solidOutput::readState(stateDir, *model);
+        std::cout << "Restart from " << stateDir.string() << '\n';
+        model->restoreState(state);
+    }
+    const auto& pc = model->elements();
+    std::cout << "    blocks " << model->geometry().nBlocks()
+        << ", elements " << pc.nElements()
+        << ", physical patches " << pc.nPatches()
+        << " (" << pc.stats().nExtendedPatches << " extended)"
+        << ", unknowns " << pc.nUnknowns() << '\n'
+        << "    analysis " << model->scheme().name() << "\n" << std::endl;
+    return model;
+}
+
+
+double largestDisplacement(const nmm::nmmSolidModel& model)
+{
+    const auto d = model.patchDisplacements();
+    return d.cols() ? d.colwise().norm().maxCoeff() : 0.0;
 }
 
 
@@ -107,11 +137,27 @@ int run(int argc, char* argv[])
     std::cout << "Start time = " << runTime.timeName() << ", time index "
         << runTime.timeIndex() << "\n" << std::endl;
 
+    auto model = createModel(runTime);
+    nmm::vtkWriter vtk
+    (
+        runTime.folder().path(), runTime.startTime(),
+        nmm::vtkFormatNamed(runTime.writeFormat())
+    );
+    runTime.addWriter("state", [&](const std::filesystem::path& dir)
+    {
+        nmm::solidOutput::writeState(dir, *model);
+    });
+
     if (args.found("dry-run"))
     {
         std::cout << "Dry run: every input was read and is valid;"
             " stopping before the time loop\n\nEnd\n" << std::endl;
         return 0;
+    }
+
+    if (runTime.timeIndex() == 0)
+    {
+        vtk.write(nmm::solidOutput::frame(*model), runTime.timeIndex(), runTime.value());
     }
 
     std::cout << "\nStarting time loop\n" << std::endl;
@@ -128,12 +174,19 @@ int run(int argc, char* argv[])
 
         std::cout << "Time = " << runTime.timeName() << "\n" << std::endl;
 
-        solveStep(runTime);
+        model->solveStep(runTime.deltaTValue());
+        model->acceptStep();
+        std::cout << "    max |D| = " << largestDisplacement(*model) << '\n';
 
         runTime.write();
+        if (runTime.writeTime())
+        {
+            vtk.write(nmm::solidOutput::frame(*model), runTime.timeIndex(), runTime.value());
+        }
         runTime.printExecutionTime(std::cout);
     }
 
+    model->printTiming(std::cout);
     std::cout << "End\n" << std::endl;
     return 0;
 }

@@ -2,6 +2,7 @@
 
 #include "nmmSolid/cover/mathematicalCover/mathematicalCover/mathematicalCover.H"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -23,6 +24,9 @@ using matrix23 = Eigen::Matrix<double, 2, 3>;
 //  positive (see the class description)
 constexpr double nitscheSafety = 2;
 constexpr double nitscheBound = 8;
+//- Elements smaller than this part of their triangle take it as their
+//  area in Nitsche's parameter (see the class description)
+constexpr double nitscheAreaFloor = 0.25;
 
 //- 3-point Gauss rule on [0, 1]
 const std::array<double, 3> gaussPoints{{0.5 - 0.5*std::sqrt(0.6), 0.5, 0.5 + 0.5*std::sqrt(0.6)}};
@@ -237,7 +241,11 @@ std::vector<double> nmmAssembler::nitscheParameters(const solidState& s) const
         const auto T = currentTriangle(e, patchD);
         const double scale = manifoldElement::signedArea(T)
             /manifoldElement::signedArea(referenceTriangle(e));
-        const double area = pc_.elements()[e].moments.area*scale;
+        const double area = std::max
+        (
+            pc_.elements()[e].moments.area*scale,
+            nitscheAreaFloor*std::abs(manifoldElement::signedArea(T))
+        );
         gamma[e] = nitscheSafety*nitscheBound*materials_[e].lambdaMax*length[e]/area;
     }
     return gamma;

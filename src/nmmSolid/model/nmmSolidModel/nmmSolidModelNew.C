@@ -1,0 +1,122 @@
+#include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
+
+#include "nmmSolid/boundary/gravity/gravity.H"
+#include "nmmSolid/global/fatalError/fatalError.H"
+#include "nmmSolid/io/case/caseFolder/caseFolder.H"
+
+#include <filesystem>
+#include <map>
+
+namespace nmm
+{
+
+namespace
+{
+
+boundaryRule ruleOf(const patchCondition& c, const blockGeometry& geometry)
+{
+    boundaryRule r;
+    r.name = geometry.patches()[c.patch].name;
+    switch (c.type)
+    {
+        case bcType::fixedValue:
+            r.type = boundaryRule::kind::fixedValue;
+            r.vectorValue = [&c](const Eigen::Vector2d& x, double t)
+            {
+                return c.displacement(x, t);
+            };
+            break;
+        case bcType::fixedNormal:
+            r.type = boundaryRule::kind::fixedNormal;
+            r.scalarValue = [&c](const Eigen::Vector2d& x, double t)
+            {
+                return c.normalDisplacement(x, t);
+            };
+            break;
+        case bcType::tractionDisplacement:
+            r.type = boundaryRule::kind::traction;
+            r.vectorValue = [&c](const Eigen::Vector2d& x, double t)
+            {
+                return c.load(x, t, Eigen::Vector2d::Zero());
+            };
+            r.scalarValue = [&c](const Eigen::Vector2d& x, double t)
+            {
+                return c.pressure->value(x, t);
+            };
+            break;
+    }
+    return r;
+}
+
+
+//- One rule per condition; each segment refers to the rule of its patch
+void setRules(nmmSolidModel::parts& p)
+{
+    std::map<const patchCondition*, int> index;
+    for (const auto& c : p.conditions->conditions())
+    {
+        index[&c] = int(p.rules.size());
+        p.rules.push_back(ruleOf(c, *p.geometry));
+    }
+    for (const auto& s : p.elements->segments())
+    {
+        const patchCondition* c = s.kind == physicalCover::segmentKind::blockEdge
+            ? p.conditions->condition(s.edge)
+            : p.conditions->condition(s.face);
+        p.segmentRule.push_back(c ? index.at(c) : -1);
+    }
+}
+
+
+timeScheme schemeOf(const solutionControls& controls)
+{
+    if (!controls.dynamic()) return timeScheme::staticScheme();
+    if (controls.timeScheme() == timeSchemeType::DDA)
+    {
+        return timeScheme::DDA(controls.velocityRatio());
+    }
+    return timeScheme::Newmark(controls.beta(), controls.gamma());
+}
+
+} // End anonymous namespace
+
+
+std::unique_ptr<nmmSolidModel> nmmSolidModel::New
+(
+    const caseFolder& runCase,
+    const std::string& startTimeName
+)
+{
+    parts p;
+    const dictionary meshDict = dictionary::read(runCase.system()/"nmmMeshDict");
+    p.geometry = std::make_unique<blockGeometry>(blockGeometry::read(meshDict));
+    if (!meshDict.findEntry("cover"))
+    {
+        throw fatalError(runCase.system().string() + "/nmmMeshDict has no 'cover' dictionary");
+    }
+    const dictionary& coverDict = meshDict.subDict("cover");
+    p.cover = mathematicalCover::New(coverDict, *p.geometry);
+    p.elements = std::make_unique<physicalCover>(*p.cover, *p.geometry, coverDict);
+    p.properties = std::make_unique<mechanicalProperties>(mechanicalProperties::read(runCase));
+
+    p.controls = std::make_unique<solutionControls>
+    (
+        solutionControls::read(runCase.system()/"nmmSolution")
+    );
+    p.scheme = schemeOf(*p.controls);
+    p.largeDisplacement = p.controls->largeDisplacement();
+    p.solver = linearSolver::New(p.controls->linearSolverDict());
+
+    p.conditions = std::make_unique<boundaryConditions>
+    (
+        boundaryConditions::read(runCase.timePath(startTimeName)/"D", *p.geometry)
+    );
+    setRules(p);
+
+    const gravity g = gravity::read(runCase.constant()/"g");
+    if (g.active()) p.gravity = g.value();
+
+    return std::make_unique<nmmSolidModel>(std::move(p));
+}
+
+} // End namespace nmm

@@ -1,0 +1,264 @@
+#include "nmmSolid/output/solidOutput/solidOutput.H"
+
+#include "nmmSolid/global/fatalError/fatalError.H"
+#include "nmmSolid/output/hdf5/hdf5File/hdf5File.H"
+#include "nmmSolid/output/vtk/vtkFieldNames/vtkFieldNames.H"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+namespace nmm
+{
+
+namespace
+{
+
+using label = physicalCover::label;
+
+//- Weights below this do not tie a point to a patch
+constexpr double weightTolerance = 1e-12;
+
+
+//- Identity of a point: block, reference position in units of a small
+//  fraction of the model size, and the patches the field is made of
+using pointKey = std::tuple<label, long long, long long, std::vector<label>>;
+
+
+struct frameBuilder
+{
+    const nmmSolidModel& model;
+    Eigen::Matrix2Xd patchD, patchV;
+    double quantum;
+    std::map<pointKey, std::int64_t> pointIds;
+    std::vector<Eigen::Vector2d> pointD, pointU;
+    std::vector<vtkSymmTensor> pointSigma;
+    std::vector<int> pointCount;
+    vtkPolygonMesh mesh;
+
+    explicit frameBuilder(const nmmSolidModel& m)
+    :
+        model(m),
+        patchD(m.patchDisplacements()),
+        patchV(m.patchVelocities()),
+        quantum(1e-10*std::max(m.geometry().modelSize(), 1e-300))
+    {}
+
+    std::int64_t point
+    (
+        const physicalCover::element& e,
+        const manifoldElement::triangleNodes& T0,
+        const manifoldElement::baryPoint& lambda,
+        const vtkSymmTensor& sigma
+    )
+    {
+        const Eigen::Vector2d X = manifoldElement::toCartesian(T0, lambda);
+        Eigen::Vector2d d = Eigen::Vector2d::Zero(), u = Eigen::Vector2d::Zero();
+        std::vector<label> patches;
+        for (int k = 0; k < 3; ++k)
+        {
+            d += lambda[k]*patchD.col(e.patches[k]);
+            u += lambda[k]*patchV.col(e.patches[k]);
+            if (std::abs(lambda[k]) > weightTolerance) patches.push_back(e.patches[k]);
+        }
+        std::sort(patches.begin(), patches.end());
+        const pointKey key
+        {
+            e.block, std::llround(X.x()/quantum), std::llround(X.y()/quantum), patches
+        };
+        auto [it, added] = pointIds.try_emplace(key, std::int64_t(pointD.size()));
+        if (added)
+        {
+            mesh.addPoint(Eigen::Vector2d(X + d));
+            pointD.push_back(d);
+            pointU.push_back(u);
+            pointSigma.push_back(vtkSymmTensor::Zero());
+            pointCount.push_back(0);
+        }
+        pointSigma[it->second] += sigma;
+        ++pointCount[it->second];
+        return it->second;
+    }
+};
+
+
+vtkSymmTensor paraviewOrder(const Eigen::Vector4d& s)
+{
+    vtkSymmTensor t;
+    t << s[0], s[1], s[3], s[2], 0, 0;
+    return t;
+}
+
+
+double vonMises(const Eigen::Vector4d& s)
+{
+    const double xx = s[0], yy = s[1], xy = s[2], zz = s[3];
+    return std::sqrt
+    (
+        0.5*((xx - yy)*(xx - yy) + (yy - zz)*(yy - zz) + (zz - xx)*(zz - xx))
+      + 3*xy*xy
+    );
+}
+
+
+//- Principal stresses, largest first
+Eigen::Vector3d principal(const Eigen::Vector4d& s)
+{
+    Eigen::Matrix2d S;
+    S << s[0], s[2], s[2], s[1];
+    const Eigen::Vector2d inPlane = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(S).eigenvalues();
+    Eigen::Vector3d p(inPlane[0], inPlane[1], s[3]);
+    std::sort(p.data(), p.data() + 3, std::greater<double>());
+    return p;
+}
+
+
+void addCellData(vtkPolygonMesh& mesh, const nmmSolidModel& model,
+                 const Eigen::Matrix2Xd& patchD, const Eigen::Matrix2Xd& patchV)
+{
+    const auto& els = model.elements().elements();
+    std::vector<Eigen::Vector2d> D, U;
+    std::vector<vtkSymmTensor> sigma;
+    std::vector<double> eq, sMax, sMid, sMin;
+    std::vector<std::int32_t> blockId, materialId;
+    for (std::size_t e = 0; e < els.size(); ++e)
+    {
+        const auto& el = els[e];
+        Eigen::Vector2d d = Eigen::Vector2d::Zero(), u = Eigen::Vector2d::Zero();
+        for (int k = 0; k < 3; ++k)
+        {
+            const double w = el.moments.area > 0 ? el.moments.w[k]/el.moments.area : 1.0/3;
+            d += w*patchD.col(el.patches[k]);
+            u += w*patchV.col(el.patches[k]);
+        }
+        D.push_back(d);
+        U.push_back(u);
+        const Eigen::Vector4d& s = model.state().sigma[e];
+        sigma.push_back(paraviewOrder(s));
+        eq.push_back(vonMises(s));
+        const Eigen::Vector3d p = principal(s);
+        sMax.push_back(p[0]);
+        sMid.push_back(p[1]);
+        sMin.push_back(p[2]);
+        blockId.push_back(el.block);
+        materialId.push_back(std::int32_t(model.materialOfBlock(el.block)));
+    }
+    namespace f = vtkFieldNames;
+    mesh.addCellData(vtkDataArray::vector(f::displacement, D));
+    mesh.addCellData(vtkDataArray::vector(f::velocity, U));
+    mesh.addCellData(vtkDataArray::symmTensor(f::stress, sigma));
+    mesh.addCellData(vtkDataArray::scalar(f::equivalentStress, eq));
+    mesh.addCellData(vtkDataArray::scalar(f::principalStressMax, sMax));
+    mesh.addCellData(vtkDataArray::scalar(f::principalStressMid, sMid));
+    mesh.addCellData(vtkDataArray::scalar(f::principalStressMin, sMin));
+    mesh.addCellData(vtkDataArray::int32(f::blockId, blockId));
+    mesh.addCellData(vtkDataArray::int32(f::materialId, materialId));
+}
+
+} // End anonymous namespace
+
+
+vtkPolygonMesh solidOutput::frame(const nmmSolidModel& model)
+{
+    frameBuilder b(model);
+    const auto& els = model.elements().elements();
+    std::vector<std::int32_t> pointBlock;
+    for (std::size_t e = 0; e < els.size(); ++e)
+    {
+        const auto T0 = model.assembler().referenceTriangle(label(e));
+        const vtkSymmTensor s = paraviewOrder(model.state().sigma[e]);
+        std::vector<std::int64_t> ids;
+        for (const auto& lambda : els[e].loops[0])
+        {
+            ids.push_back(b.point(els[e], T0, lambda, s));
+        }
+        b.mesh.addCell(ids);
+    }
+    addCellData(b.mesh, model, b.patchD, b.patchV);
+
+    for (std::size_t p = 0; p < b.pointSigma.size(); ++p)
+    {
+        b.pointSigma[p] /= b.pointCount[p];
+    }
+    namespace f = vtkFieldNames;
+    b.mesh.addPointData(vtkDataArray::vector(f::displacement, b.pointD));
+    b.mesh.addPointData(vtkDataArray::vector(f::velocity, b.pointU));
+    b.mesh.addPointData(vtkDataArray::symmTensor(f::stress, b.pointSigma));
+    return std::move(b.mesh);
+}
+
+
+const char* solidOutput::stateFileName()
+{
+    return "nmmState.h5";
+}
+
+
+void solidOutput::writeState
+(
+    const std::filesystem::path& timeDir,
+    const nmmSolidModel& model
+)
+{
+    const solidState& s = model.state();
+    hdf5File out = hdf5File::create(timeDir/stateFileName());
+    out.writeAttribute("/", "formatVersion", std::int64_t(1));
+    out.writeAttribute("/", "time", s.time);
+    out.writeAttribute("/", "timeIndex", std::int64_t(s.timeIndex));
+    out.write("D", std::vector<double>(s.D.data(), s.D.data() + s.D.size()));
+    out.write("V", std::vector<double>(s.V.data(), s.V.data() + s.V.size()));
+    out.write("A", std::vector<double>(s.A.data(), s.A.data() + s.A.size()));
+    hdf5File::array2D<double> sigma{s.sigma.size(), 4, {}};
+    for (const auto& v : s.sigma) sigma.values.insert(sigma.values.end(), v.data(), v.data() + 4);
+    out.write("sigma", sigma);
+    out.commit();
+}
+
+
+solidState solidOutput::readState
+(
+    const std::filesystem::path& timeDir,
+    const nmmSolidModel& model
+)
+{
+    const auto file = timeDir/stateFileName();
+    if (!std::filesystem::exists(file))
+    {
+        throw fatalError("cannot restart: no state file " + file.string());
+    }
+    const hdf5File in = hdf5File::openRead(file);
+    solidState s;
+    s.time = in.readDoubleAttribute("/", "time");
+    s.timeIndex = in.readIntAttribute("/", "timeIndex");
+    const auto vec = [&](const char* name)
+    {
+        const auto v = in.read<double>(name);
+        if (v.size() != model.elements().nUnknowns())
+        {
+            throw fatalError(file.string() + ": '" + name + "' has "
+                + std::to_string(v.size()) + " values but the mesh has "
+                + std::to_string(model.elements().nUnknowns())
+                + " unknowns; was nmmMeshDict changed after this time was written?");
+        }
+        return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(v.size())));
+    };
+    s.D = vec("D");
+    s.V = vec("V");
+    s.A = vec("A");
+    const auto sigma = in.read2D<double>("sigma", 4);
+    if (sigma.rows != model.elements().nElements())
+    {
+        throw fatalError(file.string() + ": stresses of " + std::to_string(sigma.rows)
+            + " elements but the mesh has " + std::to_string(model.elements().nElements()));
+    }
+    for (std::size_t e = 0; e < sigma.rows; ++e)
+    {
+        s.sigma.emplace_back(sigma(e, 0), sigma(e, 1), sigma(e, 2), sigma(e, 3));
+    }
+    return s;
+}
+
+} // End namespace nmm
