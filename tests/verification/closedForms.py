@@ -216,6 +216,7 @@ class waveBar:
     H = 0.5
     E = 1e9
     nu = 0.0
+    planeStress = True
     rho = 1000.0
     p0 = 1e6
     station = 5.0

@@ -5,7 +5,7 @@ verification case, to prove that its checker passes on exact data and
 fails on wrong data.
 
 Usage:
-    makeSynthetic.py <case> <outDir> [--tamper]
+    makeSynthetic.py <case> <outDir> [--tamper] [--level k]
 
 case: cantilever | plateHole | lame | sneddon | freeFall | waveBar
 Writes <outDir>/VTK/<name>_<index>.vtu and <outDir>/VTK/<name>.vtu.series
@@ -20,6 +20,7 @@ closedForms.py at the points (point data) and at the element centroids
     lame        displacements, stresses x 1.03
     sneddon     crack opening x 0.97          freeFall   one point off by 1e-8
     waveBar     c x 0.95
+--level k (cantilever only) writes refinement level k, for the rates.
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
@@ -137,10 +138,18 @@ def staticCase(out, X, cells, sol, dScale=1.0, sScale=1.0):
     w.close()
 
 
-def cantilever(out, tamper):
+def cantilever(out, tamper, level=None):
+    """level k (--level k): 12 x 2^k elements across the depth, and a
+    tampering of relative size 5e-3 x 2^-k that spoils the L2 rate (1
+    instead of 2) but not the tip deflection."""
     b = cf.cantilever
-    X, cells = gridMesh(np.linspace(0, b.L, 49), np.linspace(-b.D/2, b.D/2, 13))
-    staticCase(out, X, cells, b, dScale=1.05 if tamper else 1.0)
+    n = 12*2**(level or 0)
+    X, cells = gridMesh(np.linspace(0, b.L, 4*n + 1), np.linspace(-b.D/2, b.D/2, n + 1))
+    if level is None:
+        scale = 1.05 if tamper else 1.0
+    else:
+        scale = 1 + (5e-3*2.0**-level if tamper else 0.0)
+    staticCase(out, X, cells, b, dScale=scale)
 
 
 def plateHole(out, tamper):
@@ -250,7 +259,12 @@ def main(argv):
     if len(argv) < 2 or argv[0] not in CASES:
         print(__doc__)
         return 1
-    CASES[argv[0]](argv[1], "--tamper" in argv[2:])
+    kw = {}
+    if "--level" in argv[2:]:
+        if argv[0] != "cantilever":
+            raise SystemExit("--level: cantilever only")
+        kw["level"] = int(argv[argv.index("--level") + 1])
+    CASES[argv[0]](argv[1], "--tamper" in argv[2:], **kw)
     return 0
 
 
