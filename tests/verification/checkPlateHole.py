@@ -11,7 +11,8 @@ strain. On the last frame:
     stress is constant in a manifold element, so the peak is extrapolated:
     a least squares fit of the cell sigma_xx over the elements whose
     (undeformed) centroid lies within 3h of the hole and within 3h of the
-    y axis, model c0 + c1 d + c2 d^2 + c3 s^2 + c4 d s^2 with d = r - a and
+    y axis, rows weighted by sqrt(element area), model
+    c0 + c1 d + c2 d^2 + c3 s^2 + c4 d s^2 with d = r - a and
     s = a (pi/2 - theta) (sigma_xx is even in s); the peak is c0. The point
     value at the vertex nearest (0, a) (an average of the adjacent
     elements) is printed too;
@@ -43,7 +44,8 @@ def peakFromCells(f, k):
     s = k.a*(np.pi/2 - np.arctan2(c[:, 1], c[:, 0]))
     band = (d < 3*h) & (np.abs(s) < 3*h)
     sxx = nf.cellStress(f)[0]
-    return nf.extrapolate(d[band], sxx[band], extra=[s[band]**2, d[band]*s[band]**2])
+    return nf.extrapolate(d[band], sxx[band], extra=[s[band]**2, d[band]*s[band]**2],
+                          area=f.cellArea[band])
 
 
 def peakFromPoints(f, k):

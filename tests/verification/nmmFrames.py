@@ -157,9 +157,13 @@ def _subTriangles(f, k):
     pts = []
     wts = []
     n = len(c)
+    # signed areas: the fan is exact for non-convex polygons too (elements
+    # cut by a concave boundary), its orientation taken from the polygon
+    orient = 1.0 if f.cellArea[k] == 0 else np.sign(
+        0.5*(P[:, 0]*np.roll(P[:, 1], -1) - np.roll(P[:, 0], -1)*P[:, 1]).sum())
     for i in range(n):
         a, b = P[i], P[(i + 1) % n]
-        A = 0.5*abs((a[0] - xc[0])*(b[1] - xc[1]) - (b[0] - xc[0])*(a[1] - xc[1]))
+        A = 0.5*orient*((a[0] - xc[0])*(b[1] - xc[1]) - (b[0] - xc[0])*(a[1] - xc[1]))
         if A == 0:
             continue
         for (s, t), w in zip(_qp, _qw):
@@ -194,9 +198,10 @@ def energyError(f, exactStress, lam, mu):
     return float(np.sqrt(errSq/refSq))
 
 
-def extrapolate(dist, values, extra=None, maxDegree=2):
+def extrapolate(dist, values, extra=None, maxDegree=2, area=None):
     """Least squares fit of values = c0 + c1 d + c2 d^2 (+ extra columns)
-    and its value at d = 0."""
+    and its value at d = 0; rows weighted by sqrt(element area) when area
+    is given, so that slivers cut off by the boundary count little."""
     cols = [np.ones_like(dist), dist]
     if maxDegree >= 2:
         cols.append(dist*dist)
@@ -205,6 +210,10 @@ def extrapolate(dist, values, extra=None, maxDegree=2):
     M = np.column_stack(cols)
     if len(values) < M.shape[1] + 2:
         raise SystemExit("extrapolation: only %d cells in the band" % len(values))
+    if area is not None:
+        w = np.sqrt(area)
+        M = M*w[:, None]
+        values = values*w
     coef, *_ = np.linalg.lstsq(M, values, rcond=None)
     return float(coef[0])
 
