@@ -10,10 +10,14 @@ strain. On the last frame:
   - peak sigma_xx at (0, a), expected 3 sigma = 3, within 2%. The element
     stress is constant in a manifold element, so the peak is extrapolated:
     a least squares fit of the cell sigma_xx over the elements whose
-    (undeformed) centroid lies within 3h of the hole and within 3h of the
-    y axis, rows weighted by sqrt(element area), model
-    c0 + c1 d + c2 d^2 + c3 s^2 + c4 d s^2 with d = r - a and
-    s = a (pi/2 - theta) (sigma_xx is even in s); the peak is c0. The point
+    (undeformed) centroid lies within 3h of the hole (r - a < 3h) and
+    within 3h of the y axis (a (pi/2 - theta) < 3h), rows weighted by
+    sqrt(element area), model c0 + c1 q + c2 q^2 + c3 phi^2 + c4 q phi^2
+    with q = 1 - a^2/r^2 (0 on the hole; the stresses near a hole are
+    smooth in a^2/r^2, far less curved than in r) and phi = pi/2 - theta
+    (sigma_xx is even in phi); the peak is c0. On exact element values of
+    a structured mesh cut by the hole this is within 0.5% at h = 0.1 and
+    0.05% at h = 0.05 (a fit in r - a: 2% and 0.3%). The point
     value at the vertex nearest (0, a) (an average of the adjacent
     elements) is printed too;
   - relative L2 displacement error and relative energy error, printed;
@@ -41,10 +45,12 @@ def peakFromCells(f, k):
     c = f.cellCentroid
     r = np.hypot(c[:, 0], c[:, 1])
     d = r - k.a
-    s = k.a*(np.pi/2 - np.arctan2(c[:, 1], c[:, 0]))
-    band = (d < 3*h) & (np.abs(s) < 3*h)
+    q = 1 - (k.a/r)**2
+    phi = np.pi/2 - np.arctan2(c[:, 1], c[:, 0])
+    band = (d < 3*h) & (k.a*np.abs(phi) < 3*h)
     sxx = nf.cellStress(f)[0]
-    return nf.extrapolate(d[band], sxx[band], extra=[s[band]**2, d[band]*s[band]**2],
+    return nf.extrapolate(q[band], sxx[band],
+                          extra=[phi[band]**2, q[band]*phi[band]**2],
                           area=f.cellArea[band])
 
 

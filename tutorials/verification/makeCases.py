@@ -222,7 +222,7 @@ def plateHole():
     symmetryY   { type box; min (0.5 -1e-6); max (6 1e-6); }
 """, """\
     type        structured;
-    cellSize    0.1;
+    cellSize    0.05;
 """)
     sxx, syy, sxy = kirschStress()
     D(c, """\

@@ -153,14 +153,23 @@ def cantilever(out, tamper, level=None):
 
 
 def plateHole(out, tamper):
+    """The tutorial's structured triangles (h = 0.05) with the hole cut out
+    crudely: triangles whose centroid is in the hole dropped, vertices in
+    the hole moved onto it radially (small, distorted elements next to
+    the hole, as the cover cut by the boundary gives)."""
     k = cf.kirsch
-
-    def mapping(u, v):
-        # u in [0, 1] graded from the hole, v the angle
-        R = k.side/np.maximum(np.cos(v), np.sin(v))
-        r = k.a + (R - k.a)*u**2
-        return r*np.cos(v), r*np.sin(v)
-    X, cells = gridMesh(np.linspace(0, 1, 41), np.linspace(0, np.pi/2, 81), mapping)
+    n = 100
+    X, cells = gridMesh(np.linspace(0, k.side, n + 1), np.linspace(0, k.side, n + 1))
+    C = centroids(X, cells)
+    cells = [c for c, cc in zip(cells, C) if np.hypot(*cc) > k.a]
+    r = np.hypot(X[:, 0], X[:, 1])
+    inside = (r < k.a) & (r > 0)
+    X[inside] *= (k.a/r[inside])[:, None]
+    used = np.unique(np.concatenate(cells))
+    renumber = -np.ones(len(X), dtype=int)
+    renumber[used] = np.arange(len(used))
+    X = X[used]
+    cells = [list(renumber[c]) for c in cells]
     s = 0.95 if tamper else 1.0
     staticCase(out, X, cells, k, dScale=s, sScale=s)
 
