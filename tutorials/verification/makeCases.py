@@ -86,7 +86,7 @@ writeInterval   1;
 
 purgeWrite      0;
 
-writeFormat     ascii;
+writeFormat     binary;         // VTK frames exact and compact
 
 writePrecision  12;
 
