@@ -1,0 +1,240 @@
+# Needs Debian's /usr/bin/python3 (numpy from python3-numpy).
+"""Closed-form solutions of the continuum verification cases.
+
+Every function takes undeformed coordinates (numpy arrays) and returns
+numpy arrays; stresses are (sxx, syy, sxy) in the plane. The parameters are
+those of tutorials/verification/<case> (docs/verification.md, Continuum).
+
+The formulas are checked on their own by selfTest.py: Hooke's law applied
+to the strain of the displacement field (finite differences) must give the
+stress field, the stress field must be in equilibrium, and the headline
+numbers of docs/verification.md must come out.
+
+SPDX-License-Identifier: GPL-3.0-or-later
+"""
+
+import math
+
+import numpy as np
+
+
+def planeModuli(E, nu, planeStress):
+    """Plane Hooke's law: (lambda*, mu) such that
+    sigma = lambda* tr(eps) I + 2 mu eps in the plane."""
+    mu = E/(2*(1 + nu))
+    lam = E*nu/((1 + nu)*(1 - 2*nu))
+    if planeStress:
+        lam = 2*lam*mu/(lam + 2*mu)
+    return lam, mu
+
+
+# --------------------------------------------------------------------------
+# Cantilever with end shear (Timoshenko and Goodier), plane stress.
+# Beam 0 <= x <= L, -D/2 <= y <= D/2; exact displacements at x = 0,
+# parabolic shear traction at x = L whose resultant is +P (upward, +y):
+# with these displacements the tip moves up by
+# P L^3/(3EI) + (4+5nu) P D^2 L/(24 E I).
+# --------------------------------------------------------------------------
+class cantilever:
+    L = 48.0
+    D = 12.0
+    E = 3e7
+    nu = 0.3
+    P = 1000.0
+    planeStress = True
+    I = D**3/12
+
+    @classmethod
+    def displacement(cls, x, y):
+        L, D, E, nu, P, I = cls.L, cls.D, cls.E, cls.nu, cls.P, cls.I
+        ux = -P*y/(6*E*I)*((6*L - 3*x)*x + (2 + nu)*(y*y - D*D/4))
+        uy = P/(6*E*I)*(3*nu*y*y*(L - x) + (4 + 5*nu)*D*D*x/4
+                        + (3*L - x)*x*x)
+        return ux, uy
+
+    @classmethod
+    def stress(cls, x, y):
+        L, D, P, I = cls.L, cls.D, cls.P, cls.I
+        sxx = -P*(L - x)*y/I
+        syy = 0*x*y
+        sxy = P/(2*I)*(D*D/4 - y*y)
+        return sxx, syy, sxy
+
+    @classmethod
+    def tipDeflection(cls):
+        return cls.displacement(np.float64(cls.L), np.float64(0.0))[1]
+
+
+# --------------------------------------------------------------------------
+# Plate with a circular hole (Kirsch), infinite plate under sigma in x,
+# quarter model 0 <= x, y <= 5 minus the disc r < a, plane strain.
+# --------------------------------------------------------------------------
+class kirsch:
+    a = 1.0
+    side = 5.0
+    S = 1.0
+    E = 1000.0
+    nu = 0.3
+    planeStress = False
+
+    @classmethod
+    def kappa(cls):
+        if cls.planeStress:
+            return (3 - cls.nu)/(1 + cls.nu)
+        return 3 - 4*cls.nu
+
+    @classmethod
+    def displacement(cls, x, y):
+        a, S = cls.a, cls.S
+        mu = cls.E/(2*(1 + cls.nu))
+        k = cls.kappa()
+        r = np.hypot(x, y)
+        t = np.arctan2(y, x)
+        c = S*a/(8*mu)
+        ux = c*(r/a*(k + 1)*np.cos(t)
+                + 2*a/r*((1 + k)*np.cos(t) + np.cos(3*t))
+                - 2*a**3/r**3*np.cos(3*t))
+        uy = c*(r/a*(k - 3)*np.sin(t)
+                + 2*a/r*((1 - k)*np.sin(t) + np.sin(3*t))
+                - 2*a**3/r**3*np.sin(3*t))
+        return ux, uy
+
+    @classmethod
+    def stress(cls, x, y):
+        a, S = cls.a, cls.S
+        r2 = x*x + y*y
+        t = np.arctan2(y, x)
+        q2 = a*a/r2
+        q4 = q2*q2
+        sxx = S*(1 - q2*(1.5*np.cos(2*t) + np.cos(4*t)) + 1.5*q4*np.cos(4*t))
+        syy = S*(-q2*(0.5*np.cos(2*t) - np.cos(4*t)) - 1.5*q4*np.cos(4*t))
+        sxy = S*(-q2*(0.5*np.sin(2*t) + np.sin(4*t)) + 1.5*q4*np.sin(4*t))
+        return sxx, syy, sxy
+
+    @classmethod
+    def peak(cls):
+        """sigma_xx at (0, a): 3 sigma"""
+        return cls.stress(np.float64(0.0), np.float64(cls.a))[0]
+
+
+# --------------------------------------------------------------------------
+# Thick cylinder under inner pressure (Lame), quarter ring a <= r <= b,
+# plane strain.
+# --------------------------------------------------------------------------
+class lame:
+    a = 0.1
+    b = 0.2
+    p = 10e6
+    E = 10e9
+    nu = 0.25
+    planeStress = False
+
+    @classmethod
+    def AB(cls):
+        a, b, p = cls.a, cls.b, cls.p
+        return p*a*a/(b*b - a*a), p*a*a*b*b/(b*b - a*a)
+
+    @classmethod
+    def radialDisplacement(cls, r):
+        A, B = cls.AB()
+        E, nu = cls.E, cls.nu
+        if cls.planeStress:
+            return ((1 - nu)*A*r + (1 + nu)*B/r)/E
+        return (1 + nu)/E*((1 - 2*nu)*A*r + B/r)
+
+    @classmethod
+    def displacement(cls, x, y):
+        r = np.hypot(x, y)
+        ur = cls.radialDisplacement(r)
+        return ur*x/r, ur*y/r
+
+    @classmethod
+    def polarStress(cls, r):
+        A, B = cls.AB()
+        return A - B/(r*r), A + B/(r*r)
+
+    @classmethod
+    def stress(cls, x, y):
+        r = np.hypot(x, y)
+        srr, stt = cls.polarStress(r)
+        c, s = x/r, y/r
+        return (srr*c*c + stt*s*s, srr*s*s + stt*c*c, (srr - stt)*s*c)
+
+
+# --------------------------------------------------------------------------
+# Pressurised crack (Sneddon), plane strain: total opening
+# w(s) = 4 p (1 - nu^2)/E sqrt(a^2 - s^2), s along the crack from its centre.
+# --------------------------------------------------------------------------
+class sneddon:
+    a = 0.1
+    side = 2.0          # 20 a, centred on the crack
+    E = 1.0
+    nu = 0.15
+    p = 1.0
+    planeStress = False
+    angles = (0.0, 30.0, 45.0)
+
+    @classmethod
+    def Eprime(cls):
+        if cls.planeStress:
+            return cls.E
+        return cls.E/(1 - cls.nu**2)
+
+    @classmethod
+    def opening(cls, s):
+        return 4*cls.p/cls.Eprime()*np.sqrt(np.maximum(cls.a**2 - s*s, 0.0))
+
+    @classmethod
+    def centreOpening(cls):
+        return float(cls.opening(np.float64(0.0)))
+
+
+# --------------------------------------------------------------------------
+# Free fall: one unsupported block under gravity from rest.
+# --------------------------------------------------------------------------
+class freeFall:
+    g = 9.81
+    deltaT = 0.01
+    nSteps = 10
+
+    @classmethod
+    def displacementY(cls, t):
+        return -0.5*cls.g*t*t
+
+    @classmethod
+    def velocityY(cls, t):
+        return -cls.g*t
+
+
+# --------------------------------------------------------------------------
+# 1D wave in a bar: step pressure p0 on the end x = 0 from t = 0, nu = 0 so
+# that the plane stress bar is exactly one-dimensional and c = sqrt(E/rho).
+# Behind the front: sigma_xx = -p0, u_x = p0/E (c t - x), U_x = p0 c/E.
+# --------------------------------------------------------------------------
+class waveBar:
+    L = 10.0
+    H = 0.5
+    E = 1e9
+    nu = 0.0
+    planeStress = True
+    rho = 1000.0
+    p0 = 1e6
+    station = 5.0
+    deltaT = 5e-5
+    endTime = 1e-2
+
+    @classmethod
+    def c(cls):
+        return math.sqrt(cls.E/cls.rho)
+
+    @classmethod
+    def arrivalTime(cls, x=None):
+        return (cls.station if x is None else x)/cls.c()
+
+    @classmethod
+    def displacementX(cls, x, t):
+        return cls.p0/cls.E*np.maximum(cls.c()*t - x, 0.0)
+
+    @classmethod
+    def velocityX(cls, x, t):
+        return np.where(cls.c()*t > x, cls.p0*cls.c()/cls.E, 0.0)

@@ -1,0 +1,281 @@
+#!/usr/bin/python3
+# Needs Debian's /usr/bin/python3 (python3-vtk9, python3-numpy).
+"""Write nmmSolidFoam-like output holding the exact solution of a
+verification case, to prove that its checker passes on exact data and
+fails on wrong data.
+
+Usage:
+    makeSynthetic.py <case> <outDir> [--tamper] [--level k]
+
+case: cantilever | plateHole | lame | sneddon | freeFall | waveBar
+Writes <outDir>/VTK/<name>_<index>.vtu and <outDir>/VTK/<name>.vtu.series
+(name = the folder name of outDir) in the solver's layout: polygons in the
+deformed position, point and cell data D, U (3 components), sigma (6: xx yy
+zz xy yz xz), blockId, materialId. Fields are the closed forms of
+closedForms.py at the points (point data) and at the element centroids
+(cell data) of a simple structured triangle mesh of the body.
+
+--tamper writes a wrong solution the checker must reject:
+    cantilever  displacements x 1.05         plateHole  stresses x 0.95
+    lame        displacements, stresses x 1.03
+    sneddon     crack opening x 0.97          freeFall   one point off by 1e-8
+    waveBar     c x 0.95
+--level k (cantilever only) writes refinement level k, for the rates.
+
+SPDX-License-Identifier: GPL-3.0-or-later
+"""
+
+import json
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+import closedForms as cf  # noqa: E402
+
+
+def gridMesh(xs, ys, mapping=None):
+    """Points and triangles of the tensor grid xs x ys, mapped by
+    mapping(u, v) -> (x, y) when given."""
+    U, V = np.meshgrid(xs, ys, indexing="ij")
+    u, v = U.ravel(), V.ravel()
+    if mapping is not None:
+        x, y = mapping(u, v)
+    else:
+        x, y = u, v
+    ny = len(ys)
+    tris = []
+    for i in range(len(xs) - 1):
+        for j in range(ny - 1):
+            p0 = i*ny + j
+            p1 = (i + 1)*ny + j
+            p2 = (i + 1)*ny + j + 1
+            p3 = i*ny + j + 1
+            tris.append([p0, p1, p2])
+            tris.append([p0, p2, p3])
+    return np.column_stack([x, y]), tris
+
+
+def centroids(X, cells):
+    return np.array([X[c].mean(axis=0) for c in cells])
+
+
+def sigma6(sxx, syy, sxy, nu, planeStress):
+    szz = 0*sxx if planeStress else nu*(sxx + syy)
+    z = 0*sxx
+    return np.column_stack([sxx, syy, szz, sxy, z, z])
+
+
+def writeFrame(path, X, cells, D, U, Sp, Dc, Uc, Sc):
+    from vtkmodules.vtkCommonCore import vtkPoints, vtkIdList
+    from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid, VTK_POLYGON
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+
+    grid = vtkUnstructuredGrid()
+    pts = vtkPoints()
+    pts.SetDataTypeToDouble()
+    x = X + D
+    pts.SetData(numpy_to_vtk(np.column_stack([x, np.zeros(len(x))]), deep=1))
+    grid.SetPoints(pts)
+    for c in cells:
+        ids = vtkIdList()
+        for i in c:
+            ids.InsertNextId(int(i))
+        grid.InsertNextCell(VTK_POLYGON, ids)
+
+    def add(data, name, arr):
+        a = numpy_to_vtk(np.ascontiguousarray(arr), deep=1)
+        a.SetName(name)
+        data.AddArray(a)
+
+    def vec3(v):
+        return np.column_stack([v, np.zeros(len(v))])
+    pd = grid.GetPointData()
+    add(pd, "D", vec3(D))
+    add(pd, "U", vec3(U))
+    add(pd, "sigma", Sp)
+    cd = grid.GetCellData()
+    add(cd, "D", vec3(Dc))
+    add(cd, "U", vec3(Uc))
+    add(cd, "sigma", Sc)
+    add(cd, "blockId", np.zeros(len(cells), dtype=np.int32))
+    add(cd, "materialId", np.zeros(len(cells), dtype=np.int32))
+    w = vtkXMLUnstructuredGridWriter()
+    w.SetFileName(str(path))
+    w.SetInputData(grid)
+    if w.Write() != 1:
+        raise SystemExit("could not write %s" % path)
+
+
+class writer:
+    def __init__(self, outDir):
+        self.dir = Path(outDir).resolve()
+        self.name = self.dir.name
+        (self.dir/"VTK").mkdir(parents=True, exist_ok=True)
+        self.files = []
+
+    def frame(self, index, time, X, cells, D, U, Sp, Dc, Uc, Sc):
+        fname = "%s_%d.vtu" % (self.name, index)
+        writeFrame(self.dir/"VTK"/fname, X, cells, D, U, Sp, Dc, Uc, Sc)
+        self.files.append({"name": fname, "time": time})
+
+    def close(self):
+        (self.dir/"VTK"/(self.name + ".vtu.series")).write_text(json.dumps(
+            {"file-series-version": "1.0", "files": self.files}, indent=2))
+
+
+def staticCase(out, X, cells, sol, dScale=1.0, sScale=1.0):
+    C = centroids(X, cells)
+    D = np.column_stack(sol.displacement(X[:, 0], X[:, 1]))*dScale
+    Dc = np.column_stack(sol.displacement(C[:, 0], C[:, 1]))*dScale
+    Sp = sigma6(*sol.stress(X[:, 0], X[:, 1]), sol.nu, sol.planeStress)*sScale
+    Sc = sigma6(*sol.stress(C[:, 0], C[:, 1]), sol.nu, sol.planeStress)*sScale
+    w = writer(out)
+    w.frame(1, 1.0, X, cells, D, 0*D, Sp, Dc, 0*Dc, Sc)
+    w.close()
+
+
+def cantilever(out, tamper, level=None):
+    """level k (--level k): 12 x 2^k elements across the depth, and a
+    tampering of relative size 5e-3 x 2^-k that spoils the L2 rate (1
+    instead of 2) but not the tip deflection."""
+    b = cf.cantilever
+    n = 12*2**(level or 0)
+    X, cells = gridMesh(np.linspace(0, b.L, 4*n + 1), np.linspace(-b.D/2, b.D/2, n + 1))
+    if level is None:
+        scale = 1.05 if tamper else 1.0
+    else:
+        scale = 1 + (5e-3*2.0**-level if tamper else 0.0)
+    staticCase(out, X, cells, b, dScale=scale)
+
+
+def plateHole(out, tamper):
+    """The tutorial's structured triangles (h = 0.05) with the hole cut out
+    crudely: triangles whose centroid is in the hole dropped, vertices in
+    the hole moved onto it radially (small, distorted elements next to
+    the hole, as the cover cut by the boundary gives)."""
+    k = cf.kirsch
+    n = 100
+    X, cells = gridMesh(np.linspace(0, k.side, n + 1), np.linspace(0, k.side, n + 1))
+    C = centroids(X, cells)
+    cells = [c for c, cc in zip(cells, C) if np.hypot(*cc) > k.a]
+    r = np.hypot(X[:, 0], X[:, 1])
+    inside = (r < k.a) & (r > 0)
+    X[inside] *= (k.a/r[inside])[:, None]
+    used = np.unique(np.concatenate(cells))
+    renumber = -np.ones(len(X), dtype=int)
+    renumber[used] = np.arange(len(used))
+    X = X[used]
+    cells = [list(renumber[c]) for c in cells]
+    s = 0.95 if tamper else 1.0
+    staticCase(out, X, cells, k, dScale=s, sScale=s)
+
+
+def lame(out, tamper):
+    c = cf.lame
+
+    def mapping(r, t):
+        return r*np.cos(t), r*np.sin(t)
+    X, cells = gridMesh(np.linspace(c.a, c.b, 21), np.linspace(0, np.pi/2, 61), mapping)
+    s = 1.03 if tamper else 1.0
+    staticCase(out, X, cells, c, dScale=s, sScale=s)
+
+
+def sneddon(out, tamper, angleDeg=30.0):
+    c = cf.sneddon
+    h = 0.05
+    n = int(round(c.side/h))
+    xs = np.linspace(-c.side/2, c.side/2, n + 1)
+    Xl, cells = gridMesh(xs, xs)
+    # duplicate the points strictly inside the crack (local y = 0): the
+    # elements below it use the copies
+    ny = n + 1
+    jc = n//2
+    inside = [i*ny + jc for i in range(n + 1) if abs(xs[i]) < c.a*(1 - 1e-9)]
+    copy = {p: len(Xl) + k for k, p in enumerate(inside)}
+    Xl = np.vstack([Xl, Xl[inside]])
+    newCells = []
+    for tri in cells:
+        below = Xl[tri][:, 1].mean() < 0
+        newCells.append([copy[p] if below and p in copy else p for p in tri])
+    a = math.radians(angleDeg)
+    Rm = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]])
+    X = Xl @ Rm.T
+    nrm = Rm @ np.array([0.0, 1.0])
+    scale = 0.97 if tamper else 1.0
+    half = np.zeros(len(X))
+    for p in inside:
+        w = scale*float(c.opening(Xl[p, 0]))
+        half[p] = 0.5*w
+        half[copy[p]] = -0.5*w
+    D = np.outer(half, nrm)
+    C = centroids(X, newCells)
+    z6 = np.zeros((len(X), 6))
+    w = writer(out)
+    w.frame(1, 1.0, X, newCells, D, 0*D, z6, np.zeros((len(C), 2)),
+            np.zeros((len(C), 2)), np.zeros((len(C), 6)))
+    w.close()
+
+
+def freeFall(out, tamper):
+    c = cf.freeFall
+    X, cells = gridMesh(np.linspace(0, 1, 5), np.linspace(0, 1, 5))
+    w = writer(out)
+    z6 = np.zeros((len(X), 6))
+    zc6 = np.zeros((len(cells), 6))
+    for i in range(c.nSteps + 1):
+        t = i*c.deltaT
+        D = np.column_stack([0*X[:, 0], 0*X[:, 0] + c.displacementY(t)])
+        U = np.column_stack([0*X[:, 0], 0*X[:, 0] + c.velocityY(t)])
+        if tamper and i == 7:
+            D[3, 1] *= 1 + 1e-8
+        w.frame(i, t, X, cells, D, U, z6, np.tile(D[0], (len(cells), 1)),
+                np.tile(U[0], (len(cells), 1)), zc6)
+    w.close()
+
+
+def waveBar(out, tamper):
+    c = cf.waveBar
+    X, cells = gridMesh(np.linspace(0, c.L, 101), np.linspace(0, c.H, 6))
+    speed = c.c()*(0.95 if tamper else 1.0)
+    C = centroids(X, cells)
+    w = writer(out)
+    nSteps = int(round(c.endTime/c.deltaT))
+    for i in range(nSteps + 1):
+        t = i*c.deltaT
+
+        def fields(x):
+            # reflection from the fixed end x = L ignored (after the window)
+            d = c.p0/c.E*np.maximum(speed*t - x, 0.0)
+            u = np.where(speed*t > x, c.p0*speed/c.E, 0.0)
+            s = np.where(speed*t > x, -c.p0, 0.0)
+            return (np.column_stack([d, 0*d]), np.column_stack([u, 0*u]),
+                    sigma6(s, 0*s, 0*s, 0.0, True))
+        D, U, S = fields(X[:, 0])
+        Dc, Uc, Sc = fields(C[:, 0])
+        w.frame(i, t, X, cells, D, U, S, Dc, Uc, Sc)
+    w.close()
+
+
+CASES = {"cantilever": cantilever, "plateHole": plateHole, "lame": lame,
+         "sneddon": sneddon, "freeFall": freeFall, "waveBar": waveBar}
+
+
+def main(argv):
+    if len(argv) < 2 or argv[0] not in CASES:
+        print(__doc__)
+        return 1
+    kw = {}
+    if "--level" in argv[2:]:
+        if argv[0] != "cantilever":
+            raise SystemExit("--level: cantilever only")
+        kw["level"] = int(argv[argv.index("--level") + 1])
+    CASES[argv[0]](argv[1], "--tamper" in argv[2:], **kw)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,388 @@
+#!/usr/bin/env python3
+"""Write the case files of the continuum verification tutorials.
+
+Usage (from anywhere; plain python3, standard library only):
+    tutorials/verification/makeCases.py
+
+Writes system/, constant/ and 0/ of cantilever, plateHole, lame, freeFall,
+waveBar and sneddon/angle{0,30,45}. The files it writes are committed, so
+running it is only needed after changing a parameter here; the README of
+each case explains the choices. The polygons of the curved boundaries are
+written out in full (64 chords per quarter circle).
+
+SPDX-License-Identifier: GPL-3.0-or-later
+"""
+
+import math
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+NARC = 64           # chords per quarter circle
+
+
+def header(location, obj, cls="dictionary"):
+    return """/*--------------------------------*- C++ -*----------------------------------*\\
+  nmmSolid: Numerical Manifold Method for deformable geomaterials
+\\*---------------------------------------------------------------------------*/
+FoamFile
+{
+    version     2.0;
+    format      ascii;
+    class       %s;
+    location    "%s";
+    object      %s;
+}
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+""" % (cls, location, obj)
+
+
+FOOTER = "\n// ************************************************************************* //\n"
+
+
+def pt(p):
+    return "(%s %s)" % (fmt(p[0]), fmt(p[1]))
+
+
+def fmt(v):
+    v = float(v)
+    if abs(v) < 1e-15:
+        return "0"
+    r = repr(v)
+    return r[:-2] if r.endswith(".0") else r
+
+
+def polygon(points, indent="        "):
+    lines = []
+    for i in range(0, len(points), 3):
+        lines.append(indent + "    " + " ".join(pt(p) for p in points[i:i + 3]))
+    return "\n" + indent + "(\n" + "\n".join(lines) + "\n" + indent + ")"
+
+
+def write(case, rel, location, obj, body, cls="dictionary"):
+    path = HERE/case/rel
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(header(location, obj, cls) + body + FOOTER)
+
+
+def controlDict(case, endTime, deltaT, comment):
+    write(case, "system/controlDict", "system", "controlDict", """\
+// %s
+application     nmmSolidFoam;
+
+startFrom       startTime;
+
+startTime       0;
+
+stopAt          endTime;
+
+endTime         %s;
+
+deltaT          %s;
+
+writeControl    timeStep;
+
+writeInterval   1;
+
+purgeWrite      0;
+
+writeFormat     binary;         // VTK frames exact and compact
+
+writePrecision  12;
+
+timeFormat      general;
+
+timePrecision   8;
+
+runTimeModifiable yes;
+
+adjustTimeStep  no;
+
+functions
+{
+}
+""" % (comment, endTime, deltaT))
+
+
+def staticSolution(case):
+    write(case, "system/nmmSolution", "system", "nmmSolution", """\
+analysis        static;
+
+linearSolver    { type cholmod; }
+""")
+
+
+def mechanicalProperties(case, planeStress, name, E, nu, rho):
+    write(case, "constant/mechanicalProperties", "constant", "mechanicalProperties",
+          """\
+planeStress     %s;
+
+thickness       1;
+
+materials
+{
+    %s { type linearElastic; E %s; nu %s; rho %s; }
+}
+""" % ("yes" if planeStress else "no", name, E, nu, rho))
+
+
+def D(case, patches):
+    write(case, "0/D", "0", "D", """\
+dimensions      [0 1 0 0 0 0 0];
+
+internalField   uniform (0 0 0);
+
+boundaryField
+{
+%s}
+""" % patches, cls="volVectorField")
+
+
+def meshDict(case, blocks, patches, cover, joints=None):
+    body = "blocks\n(\n%s);\n\n" % blocks
+    if joints:
+        body += "joints\n(\n%s);\n\n" % joints
+    body += "patches\n{\n%s}\n\ncover\n{\n%s}\n" % (patches, cover)
+    write(case, "system/nmmMeshDict", "system", "nmmMeshDict", body)
+
+
+def arc(r, t0, t1, n, ends=False):
+    """Points on a circle of radius r from angle t0 to t1 (n chords);
+    the end points only when ends."""
+    ks = range(0, n + 1) if ends else range(1, n)
+    return [(r*math.cos(t0 + (t1 - t0)*k/n), r*math.sin(t0 + (t1 - t0)*k/n))
+            for k in ks]
+
+
+# --------------------------------------------------------------------------
+def cantilever():
+    c = "cantilever"
+    controlDict(c, 1, 1, "Static: one step, loads evaluated at t = 1")
+    staticSolution(c)
+    mechanicalProperties(c, True, "beam", "3e7", "0.3", "1")
+    meshDict(c, """\
+    beam { material beam; polygon ((0 -6) (48 -6) (48 6) (0 6)); }
+""", """\
+    fixedEnd    { type box; min (-1e-6 -7); max (1e-6 7); }
+    loadedEnd   { type box; min (47.999999 -7); max (48.000001 7); }
+""", """\
+    type        structured;
+    cellSize    0.5;
+""")
+    # P/(6EI) with I = D^3/12 = 144; P/(2I) = 1000/288
+    k = "1000/(6*3e7*144)"
+    D(c, """\
+    // Timoshenko-Goodier displacements (exact at x = 0)
+    fixedEnd
+    {
+        type    fixedValue;
+        value   expression
+            "vector(-%s*y*((6*48 - 3*x)*x + 2.3*(y*y - 36)), %s*(0.9*y*y*(48 - x) + 5.5*144*x/4 + (144 - x)*x*x), 0)";
+    }
+    // Parabolic shear, resultant +P = 1000 (upward)
+    loadedEnd
+    {
+        type        tractionDisplacement;
+        traction    expression "vector(0, 1000/288*(36 - y*y), 0)";
+        pressure    uniform 0;
+    }
+""" % (k, k))
+
+
+# --------------------------------------------------------------------------
+def kirschStress():
+    q2 = "1/(x*x + y*y)"
+    q4 = "1/sqr(x*x + y*y)"
+    c2, c4 = "cos(2*atan2(y, x))", "cos(4*atan2(y, x))"
+    s2, s4 = "sin(2*atan2(y, x))", "sin(4*atan2(y, x))"
+    sxx = "1 - %s*(1.5*%s + %s) + 1.5*%s*%s" % (q2, c2, c4, q4, c4)
+    syy = "-%s*(0.5*%s - %s) - 1.5*%s*%s" % (q2, c2, c4, q4, c4)
+    sxy = "-%s*(0.5*%s + %s) + 1.5*%s*%s" % (q2, s2, s4, q4, s4)
+    return sxx, syy, sxy
+
+
+def plateHole():
+    c = "plateHole"
+    controlDict(c, 1, 1, "Static: one step, loads evaluated at t = 1")
+    staticSolution(c)
+    mechanicalProperties(c, False, "plate", "1000", "0.3", "1")
+    pts = [(1, 0), (5, 0), (5, 5), (0, 5), (0, 1)] \
+        + arc(1.0, math.pi/2, 0.0, NARC)
+    meshDict(c, """\
+    plate
+    {
+        material plate;
+        // (1 0) (5 0) (5 5) (0 5) (0 1), then the hole r = 1 back to (1 0)
+        polygon%s;
+    }
+""" % polygon(pts), """\
+    right       { type box; min (4.999999 -1); max (6 6); }
+    top         { type box; min (-1 4.999999); max (6 6); }
+    symmetryX   { type box; min (-1e-6 0.5); max (1e-6 6); }
+    symmetryY   { type box; min (0.5 -1e-6); max (6 1e-6); }
+""", """\
+    type        structured;
+    cellSize    0.05;
+""")
+    sxx, syy, sxy = kirschStress()
+    D(c, """\
+    // Kirsch's stresses (a = 1, sigma = 1 in x) as tractions on the outer
+    // edges: n = (1 0) on x = 5, n = (0 1) on y = 5
+    right
+    {
+        type        tractionDisplacement;
+        traction    expression
+            "vector(%s, %s, 0)";
+        pressure    uniform 0;
+    }
+    top
+    {
+        type        tractionDisplacement;
+        traction    expression
+            "vector(%s, %s, 0)";
+        pressure    uniform 0;
+    }
+    symmetryX   { type fixedNormal; }
+    symmetryY   { type fixedNormal; }
+""" % (sxx, sxy, sxy, syy))
+
+
+# --------------------------------------------------------------------------
+def lame():
+    c = "lame"
+    a, b = 0.1, 0.2
+    controlDict(c, 1, 1, "Static: one step, loads evaluated at t = 1")
+    staticSolution(c)
+    mechanicalProperties(c, False, "steel", "10e9", "0.25", "7800")
+    pts = [(b, 0)] + arc(b, 0.0, math.pi/2, NARC) + [(0, b), (0, a)] \
+        + arc(a, math.pi/2, 0.0, NARC) + [(a, 0)]
+    meshDict(c, """\
+    ring
+    {
+        material steel;
+        // outer arc r = 0.2 from (0.2 0) to (0 0.2), inner arc r = 0.1 back
+        polygon%s;
+    }
+""" % polygon(pts), """\
+    inner       { type box; min (-1e-6 -1e-6); max (0.100001 0.100001); }
+    symmetryX   { type box; min (-1e-6 0.05); max (1e-6 0.3); }
+    symmetryY   { type box; min (0.05 -1e-6); max (0.3 1e-6); }
+""", """\
+    type        structured;
+    cellSize    0.0025;
+""")
+    D(c, """\
+    inner
+    {
+        type        tractionDisplacement;
+        traction    uniform (0 0 0);
+        pressure    uniform 1e7;
+    }
+    symmetryX   { type fixedNormal; }
+    symmetryY   { type fixedNormal; }
+""")
+
+
+# --------------------------------------------------------------------------
+def freeFall():
+    c = "freeFall"
+    controlDict(c, 0.1, 0.01, "Ten steps of 0.01 s, every step written")
+    write(c, "system/nmmSolution", "system", "nmmSolution", """\
+analysis        dynamic;
+
+// DDA: Newmark beta = 1/2, gamma = 1; the velocity is carried over whole
+timeScheme      { type DDA; velocityRatio 1; }
+
+linearSolver    { type cholmod; }
+""")
+    mechanicalProperties(c, False, "rock", "1e8", "0.3", "2000")
+    write(c, "constant/g", "constant", "g", """\
+dimensions      [0 1 -2 0 0 0 0];
+
+value           (0 -9.81 0);
+""", cls="uniformDimensionedVectorField")
+    meshDict(c, """\
+    cube { material rock; polygon ((0 0) (1 0) (1 1) (0 1)); }
+""", "", """\
+    type        structured;
+    cellSize    0.25;
+""")
+    D(c, "    // No patch: every edge is traction free\n")
+
+
+# --------------------------------------------------------------------------
+def waveBar():
+    c = "waveBar"
+    controlDict(c, 1e-2, 5e-5, "200 steps of 5e-5 s (Courant number c dt/h = 0.5), "
+                "every step written")
+    write(c, "system/nmmSolution", "system", "nmmSolution", """\
+analysis        dynamic;
+
+// Trapezoidal rule: no numerical damping, second order
+timeScheme      { type Newmark; beta 0.25; gamma 0.5; }
+
+linearSolver    { type cholmod; }
+""")
+    mechanicalProperties(c, True, "bar", "1e9", "0", "1000")
+    meshDict(c, """\
+    bar { material bar; polygon ((0 0) (10 0) (10 0.5) (0 0.5)); }
+""", """\
+    loaded      { type box; min (-1e-6 -1); max (1e-6 1); }
+    fixed       { type box; min (9.999999 -1); max (10.000001 1); }
+""", """\
+    type        structured;
+    cellSize    0.1;
+""")
+    D(c, """\
+    // Step load: 1 MPa from t = 0 on
+    loaded
+    {
+        type        tractionDisplacement;
+        traction    uniform (0 0 0);
+        pressure    uniform 1e6;
+    }
+    fixed       { type fixedValue; value uniform (0 0 0); }
+""")
+
+
+# --------------------------------------------------------------------------
+def sneddon(angleDeg):
+    c = "sneddon/angle%d" % angleDeg
+    a = 0.1
+    t = math.radians(angleDeg)
+    tip = (a*math.cos(t), a*math.sin(t))
+    controlDict(c, 1, 1, "Static: one step, loads evaluated at t = 1")
+    staticSolution(c)
+    mechanicalProperties(c, False, "solid", "1", "0.15", "1")
+    meshDict(c, """\
+    plate { material solid; polygon ((-1 -1) (1 -1) (1 1) (-1 1)); }
+""", """\
+    crack       { type joint; joint crack1; }
+    bottom      { type box; min (-2 -1.000001); max (2 -0.999999); }
+""", """\
+    type        structured;
+    cellSize    0.01;
+""", joints="""\
+    // half-length a = 0.1 at %d degrees to the x axis (and the cover lines)
+    crack1 { points (%s %s); }
+""" % (angleDeg, pt((-tip[0], -tip[1])), pt(tip)))
+    D(c, """\
+    crack
+    {
+        type        tractionDisplacement;
+        traction    uniform (0 0 0);
+        pressure    uniform 1;
+    }
+    // Rigid motion restrained on the far boundary, 10 a from the crack
+    bottom      { type fixedValue; value uniform (0 0 0); }
+""")
+
+
+if __name__ == "__main__":
+    cantilever()
+    plateHole()
+    lame()
+    freeFall()
+    waveBar()
+    for angle in (0, 30, 45):
+        sneddon(angle)
