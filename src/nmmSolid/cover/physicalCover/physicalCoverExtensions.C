@@ -18,6 +18,9 @@ using label = physicalCover::label;
 //  looked for
 constexpr int maxExtensionDepth = 3;
 
+//- Support below which a patch is numerical dust (see nearbyHealthyElement)
+constexpr double dustSupportRatio = 1e-12;
+
 
 //- Elements of each patch
 std::vector<std::vector<label>> elementsOfPatches
@@ -86,6 +89,44 @@ label healthyElement
     return -1;
 }
 
+//- The healthy element of p's block nearest to p's node among the
+//  triangles of the stars around its star: the fallback for a patch that
+//  is numerical dust (a piece of a corner cut off by a node an ulp away)
+//  and shares no stretch of edge with anything
+label nearbyHealthyElement
+(
+    label p,
+    const mathematicalCover& cover,
+    const std::vector<physicalCover::patch>& patches,
+    const std::vector<physicalCover::element>& elements,
+    const std::vector<label>& elementOffsets,
+    const std::vector<bool>& healthy
+)
+{
+    const Eigen::Vector2d x = cover.nodes()[patches[p].node];
+    label best = -1;
+    double bestDistance = std::numeric_limits<double>::max();
+    for (const auto t : cover.star(patches[p].node))
+    {
+        for (const auto n : cover.triangles()[t])
+        {
+            for (const auto u : cover.star(n))
+            {
+                for (label e = elementOffsets[u]; e < elementOffsets[u + 1]; ++e)
+                {
+                    const auto& ps = elements[e].patches;
+                    if (elements[e].block != patches[p].block) continue;
+                    if (!(healthy[ps[0]] && healthy[ps[1]] && healthy[ps[2]])) continue;
+                    const auto T = physicalCover::triangleOf(cover, elements[e]);
+                    const double d = (T.rowwise().mean() - x).squaredNorm();
+                    if (d < bestDistance) { bestDistance = d; best = e; }
+                }
+            }
+        }
+    }
+    return best;
+}
+
 } // End anonymous namespace
 
 
@@ -123,6 +164,18 @@ void physicalCover::buildExtensions
         ? elementsOfPatches(patches_.size(), elements_)
         : std::vector<std::vector<label>>();
 
+    // Elements are stored triangle by triangle
+    std::vector<label> elementOffsets;
+    if (cover)
+    {
+        elementOffsets.assign(cover->nTriangles() + 1, 0);
+        for (const auto& e : elements_) ++elementOffsets[e.triangle + 1];
+        for (std::size_t t = 0; t < cover->nTriangles(); ++t)
+        {
+            elementOffsets[t + 1] += elementOffsets[t];
+        }
+    }
+
     // A patch extends from the healthy element found for it, or keeps
     // unknowns of its own
     std::vector<label> source(patches_.size(), -1);
@@ -130,6 +183,13 @@ void physicalCover::buildExtensions
     {
         if (healthy[p]) continue;
         source[p] = healthyElement(p, *cover, patches_, elements_, elementsOf, healthy);
+        if (source[p] < 0 && patches_[p].supportRatio < dustSupportRatio)
+        {
+            source[p] = nearbyHealthyElement
+            (
+                p, *cover, patches_, elements_, elementOffsets, healthy
+            );
+        }
     }
 
     unknownIndex_.assign(patches_.size(), -1);

@@ -101,7 +101,41 @@ nmmAssembler::nmmAssembler
     rules_(std::move(segmentRules)),
     gravity_(gravity),
     updateGeometry_(updateGeometry)
-{}
+{
+    setFluxElements();
+}
+
+
+void nmmAssembler::setFluxElements()
+{
+    const auto& els = pc_.elements();
+    std::vector<std::vector<label>> elementsOf(pc_.nPatches());
+    for (label e = 0; e < label(els.size()); ++e)
+    {
+        for (const label p : els[e].patches) elementsOf[p].push_back(e);
+    }
+    fluxElement_.resize(els.size());
+    for (label e = 0; e < label(els.size()); ++e)
+    {
+        fluxElement_[e] = e;
+        if (els[e].areaRatio >= nitscheAreaFloor) continue;
+        for (const label p : els[e].patches)
+        {
+            for (const label f : elementsOf[p])
+            {
+                int shared = 0;
+                for (const label q : els[f].patches)
+                {
+                    for (const label r : els[e].patches) shared += (q == r);
+                }
+                if (shared >= 2 && els[f].areaRatio > els[fluxElement_[e]].areaRatio)
+                {
+                    fluxElement_[e] = f;
+                }
+            }
+        }
+    }
+}
 
 
 Eigen::Matrix2Xd nmmAssembler::patchDisplacements(const Eigen::VectorXd& D) const
@@ -181,6 +215,21 @@ void nmmAssembler::scatter(label e, const matrix66& Ke, triplets& K) const
 }
 
 
+void nmmAssembler::scatter(label r, label c, const matrix66& Ke, triplets& K) const
+{
+    const auto rows = dofTerms(r);
+    const auto cols = dofTerms(c);
+    for (const auto& a : rows)
+    {
+        for (const auto& b : cols)
+        {
+            const double v = a.coefficient*b.coefficient*Ke(a.local, b.local);
+            if (v != 0) K.emplace_back(a.dof, b.dof, v);
+        }
+    }
+}
+
+
 void nmmAssembler::scatter(label e, const vector6& fe, Eigen::VectorXd& f) const
 {
     for (const auto& a : dofTerms(e)) f[a.dof] += a.coefficient*fe[a.local];
@@ -233,7 +282,8 @@ std::vector<double> nmmAssembler::nitscheParameters(const solidState& s) const
         if (!rule || (rule->type != boundaryRule::kind::fixedValue
                    && rule->type != boundaryRule::kind::fixedNormal)) continue;
         const auto& seg = pc_.segments()[i];
-        length[seg.element] += currentSegment(currentTriangle(seg.element, patchD), seg).length;
+        length[fluxElement_[seg.element]] +=
+            currentSegment(currentTriangle(seg.element, patchD), seg).length;
     }
     for (label e = 0; e < label(pc_.nElements()); ++e)
     {
@@ -268,61 +318,97 @@ void nmmAssembler::addSegments
         if (!rule || rule->type == boundaryRule::kind::tractionFree) continue;
         const auto& seg = pc_.segments()[i];
         const label e = seg.element;
-        const auto T = currentTriangle(e, patchD);
-        const auto T0 = referenceTriangle(e);
-        const auto g = currentSegment(T, seg);
+        const auto g = currentSegment(currentTriangle(e, patchD), seg);
         if (g.length == 0) continue;
-
-        const Eigen::VectorXd de = elementDisplacements(e, s.D);
-        const matrix23 Pn = tractionMatrix(g.normal);
-        const Eigen::Matrix<double, 2, 6> tractionOfD
-            = Pn*materials_[e].D*manifoldElement::strainMatrix(T);
-        const Eigen::Vector2d sigmaN = Pn*s.sigma[e].head<3>();
-
-        matrix66 Ks = matrix66::Zero();
-        vector6 fs = vector6::Zero();
-        for (int qp = 0; qp < 3; ++qp)
+        if (rule->type == boundaryRule::kind::traction)
         {
-            const baryPoint lambda = (1 - gaussPoints[qp])*seg.p + gaussPoints[qp]*seg.q;
-            const double w = gaussWeights[qp]*g.length*thickness_;
-            const matrix26 N = weightMatrix(lambda);
-            const Eigen::Vector2d X = manifoldElement::toCartesian(T0, lambda);
-
-            switch (rule->type)
-            {
-                case boundaryRule::kind::traction:
-                {
-                    const Eigen::Vector2d tr = rule->vectorValue(X, t1)
-                        - rule->scalarValue(X, t1)*g.normal;
-                    fs += w*N.transpose()*tr;
-                    break;
-                }
-                case boundaryRule::kind::fixedValue:
-                {
-                    const Eigen::Vector2d r = rule->vectorValue(X, t1) - N*de;
-                    Ks += w*(-N.transpose()*tractionOfD - tractionOfD.transpose()*N
-                        + gamma[e]*N.transpose()*N);
-                    fs += w*(N.transpose()*sigmaN
-                        + (tractionOfD.transpose() + gamma[e]*N.transpose())*r);
-                    break;
-                }
-                case boundaryRule::kind::fixedNormal:
-                {
-                    const Eigen::Matrix<double, 1, 6> nN = g.normal.transpose()*N;
-                    const Eigen::Matrix<double, 1, 6> nT = g.normal.transpose()*tractionOfD;
-                    const double r = rule->scalarValue(X, t1) - nN*de;
-                    Ks += w*(-nN.transpose()*nT - nT.transpose()*nN
-                        + gamma[e]*nN.transpose()*nN);
-                    fs += w*(nN.transpose()*g.normal.dot(sigmaN)
-                        + (nT.transpose() + gamma[e]*nN.transpose())*r);
-                    break;
-                }
-                case boundaryRule::kind::tractionFree: break;
-            }
+            addTraction(*rule, seg, g.length, g.normal, t1, f);
         }
-        scatter(e, Ks, K);
-        scatter(e, fs, f);
+        else
+        {
+            addNitsche(*rule, seg, g.length, g.normal, t1, gamma, s, patchD, K, f);
+        }
     }
+}
+
+
+void nmmAssembler::addTraction
+(
+    const boundaryRule& rule,
+    const physicalCover::boundarySegment& seg,
+    double length,
+    const Eigen::Vector2d& normal,
+    double t1,
+    Eigen::VectorXd& f
+) const
+{
+    const auto T0 = referenceTriangle(seg.element);
+    vector6 fs = vector6::Zero();
+    for (int qp = 0; qp < 3; ++qp)
+    {
+        const baryPoint lambda = (1 - gaussPoints[qp])*seg.p + gaussPoints[qp]*seg.q;
+        const Eigen::Vector2d X = manifoldElement::toCartesian(T0, lambda);
+        const Eigen::Vector2d tr = rule.vectorValue(X, t1) - rule.scalarValue(X, t1)*normal;
+        fs += gaussWeights[qp]*length*thickness_*weightMatrix(lambda).transpose()*tr;
+    }
+    scatter(seg.element, fs, f);
+}
+
+
+void nmmAssembler::addNitsche
+(
+    const boundaryRule& rule,
+    const physicalCover::boundarySegment& seg,
+    double length,
+    const Eigen::Vector2d& normal,
+    double t1,
+    const std::vector<double>& gamma,
+    const solidState& s,
+    const Eigen::Matrix2Xd& patchD,
+    triplets& K,
+    Eigen::VectorXd& f
+) const
+{
+    const label e = seg.element;
+    const label fe = fluxElement_[e];
+    const auto T0 = referenceTriangle(e);
+    const double gam = gamma[fe];
+
+    // The flux: traction of the flux element's stress and of its dofs
+    const matrix23 Pn = tractionMatrix(normal);
+    const matrix26 tractionOfD
+        = Pn*materials_[fe].D*manifoldElement::strainMatrix(currentTriangle(fe, patchD));
+    const Eigen::Vector2d sigmaN = Pn*s.sigma[fe].head<3>();
+    const Eigen::VectorXd de = elementDisplacements(e, s.D);
+
+    // Projection on what is prescribed: all of u, or its normal part
+    const bool normalOnly = rule.type == boundaryRule::kind::fixedNormal;
+    const Eigen::Matrix2d P = normalOnly ? Eigen::Matrix2d(normal*normal.transpose())
+                                         : Eigen::Matrix2d::Identity();
+
+    matrix66 Kee = matrix66::Zero(), Kef = matrix66::Zero();
+    vector6 fE = vector6::Zero(), fF = vector6::Zero();
+    for (int qp = 0; qp < 3; ++qp)
+    {
+        const baryPoint lambda = (1 - gaussPoints[qp])*seg.p + gaussPoints[qp]*seg.q;
+        const double w = gaussWeights[qp]*length*thickness_;
+        const matrix26 N = weightMatrix(lambda);
+        const Eigen::Vector2d X = manifoldElement::toCartesian(T0, lambda);
+        const Eigen::Vector2d target = normalOnly
+            ? Eigen::Vector2d(rule.scalarValue(X, t1)*normal)
+            : rule.vectorValue(X, t1);
+        const Eigen::Vector2d r = P*(target - N*de);
+
+        Kee += w*gam*N.transpose()*P*N;
+        Kef -= w*N.transpose()*P*tractionOfD;
+        fE += w*(N.transpose()*P*sigmaN + gam*N.transpose()*r);
+        fF -= w*tractionOfD.transpose()*r;
+    }
+    scatter(e, Kee, K);
+    scatter(e, fe, Kef, K);
+    scatter(fe, e, matrix66(Kef.transpose()), K);
+    scatter(e, fE, f);
+    scatter(fe, fF, f);
 }
 
 

@@ -53,7 +53,9 @@ public:
         const blockGeometry& geometry,
         const Eigen::AlignedBox2d& box,
         double fineSize,
-        double distance
+        double distance,
+        bool nearBlocks,
+        bool nearJoints
     )
     :
         origin_(box.min()), h_(0.5*fineSize),
@@ -61,23 +63,38 @@ public:
         ny_(long(std::ceil(box.sizes().y()/h_)) + 1),
         marked_(std::size_t(nx_*ny_), false)
     {
-        // A cell is marked when any of it may be within distance
-        const double reach = distance + 0.7072*h_;
         for (const auto& b : geometry.blocks())
         {
             for (const auto& [l, i] : b.edgeList())
             {
                 const auto [p, q] = b.edge(l, i);
-                const Eigen::Vector2d lo = p.cwiseMin(q).array() - reach;
-                const Eigen::Vector2d hi = p.cwiseMax(q).array() + reach;
-                for (long j = index(lo.y() - origin_.y(), ny_); j <= index(hi.y() - origin_.y(), ny_); ++j)
-                {
-                    for (long k = index(lo.x() - origin_.x(), nx_); k <= index(hi.x() - origin_.x(), nx_); ++k)
-                    {
-                        const Eigen::Vector2d c = origin_ + h_*Eigen::Vector2d(k + 0.5, j + 0.5);
-                        if (segmentDistance(c, p, q) <= reach) marked_[j*nx_ + k] = true;
-                    }
-                }
+                if (nearBlocks) mark(p, q, distance);
+            }
+        }
+        // Cracks too: their tips are where the stresses are singular
+        for (const auto& jt : geometry.joints())
+        {
+            if (!nearJoints) break;
+            for (std::size_t i = 0; i < jt.nSegments(); ++i)
+            {
+                const auto [p, q] = jt.segment(i);
+                mark(p, q, distance);
+            }
+        }
+    }
+
+    //- Mark the cells any of which may be within distance of p-q
+    void mark(const Eigen::Vector2d& p, const Eigen::Vector2d& q, double distance)
+    {
+        const double reach = distance + 0.7072*h_;
+        const Eigen::Vector2d lo = p.cwiseMin(q).array() - reach;
+        const Eigen::Vector2d hi = p.cwiseMax(q).array() + reach;
+        for (long j = index(lo.y() - origin_.y(), ny_); j <= index(hi.y() - origin_.y(), ny_); ++j)
+        {
+            for (long k = index(lo.x() - origin_.x(), nx_); k <= index(hi.x() - origin_.x(), nx_); ++k)
+            {
+                const Eigen::Vector2d c = origin_ + h_*Eigen::Vector2d(k + 0.5, j + 0.5);
+                if (segmentDistance(c, p, q) <= reach) marked_[j*nx_ + k] = true;
             }
         }
     }
@@ -195,6 +212,8 @@ const keywordTable& refineKeywords()
             .required().above(0);
         t.scalar("distance", "width of the refined band", "m")
             .required().atLeast(0);
+        t.word("near", "which boundaries: block edges and joints, or only "
+            "one of them").choices({"all", "blocks", "joints"}).defaultValue("all");
         return t;
     }();
     return table;
@@ -241,7 +260,12 @@ delaunayCover::delaunayCover
         nEstimate += 2*std::min(box.volume(), perimeter*band2)
             /(equilateral*fineCellSize_*fineCellSize_);
         checkSize(nEstimate, *refine, "cellSize");
-        band = std::make_unique<boundaryBand>(geometry, box, fineCellSize_, refineDistance_);
+        const std::string near = refineKeywords().get<std::string>(*refine, "near");
+        band = std::make_unique<boundaryBand>
+        (
+            geometry, box, fineCellSize_, refineDistance_,
+            near != "joints", near != "blocks"
+        );
     }
     checkSize(nEstimate, coverDict, "cellSize");
 

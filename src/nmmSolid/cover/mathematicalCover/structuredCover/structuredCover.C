@@ -38,7 +38,13 @@ structuredCover::structuredCover
     const double h = cellSize();
     const double margin = coverDict.found("margin")
         ? keywords().get<double>(coverDict, "margin") : h;
-    const Eigen::AlignedBox2d box = coverBox(geometry, margin);
+    // Nodes are counted from the blocks' lowest corner, which is then a
+    // node exactly: a node an ulp away from a block vertex or edge would
+    // cut slivers of area 1e-30 off the material
+    const Eigen::Vector2d anchor = geometry.bounds().min();
+    const double cellsBefore = std::ceil(margin/h - 1e-9);
+    Eigen::AlignedBox2d box = coverBox(geometry, margin);
+    box.min() = anchor - Eigen::Vector2d::Constant(cellsBefore*h);
 
     // Counted in double before anything is allocated; a quotient that is a
     // whole number but for round-off (1.2/0.1) is not rounded up
@@ -49,18 +55,19 @@ structuredCover::structuredCover
     const label ni = label(nx), nj = label(ny);
     // The last row and column reach at least the box, which the rounding
     // above may have missed by a hair
-    auto coordinate = [h](double lo, double hi, label i, label n)
+    auto coordinate = [h, cellsBefore](double lo, double hi, label i, label n)
     {
-        return i == n ? std::max(lo + n*h, hi) : lo + i*h;
+        const double x = lo + (i - cellsBefore)*h;
+        return i == n ? std::max(x, hi) : x;
     };
     std::vector<Eigen::Vector2d> nodes;
     nodes.reserve(std::size_t(ni + 1)*(nj + 1));
     for (label j = 0; j <= nj; ++j)
     {
-        const double y = coordinate(box.min().y(), box.max().y(), j, nj);
+        const double y = coordinate(anchor.y(), box.max().y(), j, nj);
         for (label i = 0; i <= ni; ++i)
         {
-            nodes.emplace_back(coordinate(box.min().x(), box.max().x(), i, ni), y);
+            nodes.emplace_back(coordinate(anchor.x(), box.max().x(), i, ni), y);
         }
     }
 
