@@ -4,6 +4,7 @@
 #include "nmmSolid/global/fatalError/fatalError.H"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
 
 #include <cmath>
 #include <iomanip>
@@ -98,8 +99,29 @@ std::string nmmSolidModel::blockOfUnknown(long dof) const
 }
 
 
+void nmmSolidModel::initialiseAcceleration()
+{
+    // Newmark's update uses A0; at the start it is M^-1 of the loads out of
+    // balance (gravity on a free body), not zero
+    const auto sys = assembler_->assemble(state_, 0, timeScheme::staticScheme());
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> massSolver(assembler_->mass());
+    if (massSolver.info() == Eigen::Success)
+    {
+        state_.A = massSolver.solve(sys.f);
+    }
+}
+
+
 void nmmSolidModel::solveStep(double dt)
 {
+    if (parts_.scheme.dynamic() && parts_.scheme.accelerationFactor() != 0
+     && state_.timeIndex == 0 && state_.A.isZero())
+    {
+        const cpuTime clock;
+        initialiseAcceleration();
+        timing_["mass matrix"] += clock.elapsed();
+    }
+
     cpuTime clock;
     const auto sys = assembler_->assemble(state_, dt, parts_.scheme);
     timing_["assembly"] += clock.elapsed();
