@@ -58,6 +58,8 @@ timeDirs()
     for d in */
     do
         d="${d%/}"
+        # The initial conditions (0/) are input, not written times
+        [ "$d" = 0 ] && continue
         [[ "$d" =~ ^[-+]?[0-9.]+([eE][-+]?[0-9]+)?$ ]] && echo "$d"
     done | sort -g | tr '\n' ' ' | sed 's/ $//'
 }

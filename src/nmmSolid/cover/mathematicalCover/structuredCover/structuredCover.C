@@ -19,7 +19,8 @@ const keywordTable& structuredCover::keywords()
         t.include(physicalCover::keywords());
         t.scalar("cellSize", "square side (triangle leg length)", "m")
             .required().above(0);
-        t.scalar("margin", "cover extends this far beyond the blocks; "
+        t.scalar("margin", "cover extends at least this far beyond the "
+            "blocks (rounded up to whole cells below and left); "
             "default one cellSize", "m").atLeast(0);
         return t;
     }();
