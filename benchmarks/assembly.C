@@ -353,10 +353,11 @@ void printSummary()
     const double total = results.firstStep >= 0 ? results.firstStep : parts ? sum : -1;
     std::printf
     (
-        "summary: unknowns %zu, nnz(K) %ld, nnz(L) %ld | assemble %s,"
+        "summary: unknowns %zu, nnz(K) %ld, nnz(L) %s | assemble %s,"
         " analyse+factorise %s, factorise %s, solve %s, sum %s |"
         " solveStep first %s (target < %g s: %s), second %s | peak RSS %.0f MB\n",
-        results.unknowns, results.nnzK, results.nnzL,
+        results.unknowns, results.nnzK,
+        results.nnzL > 0 ? std::to_string(results.nnzL).c_str() : "-",
         seconds(results.assemble).c_str(), seconds(results.analyseFactorise).c_str(),
         seconds(results.factorise).c_str(), seconds(results.solve).c_str(),
         seconds(parts ? sum : -1).c_str(), seconds(results.firstStep).c_str(),
