@@ -208,8 +208,11 @@ void nmmAssembler::scatter(label e, const matrix66& Ke, triplets& K) const
     {
         for (const auto& b : terms)
         {
-            const double v = a.coefficient*b.coefficient*Ke(a.local, b.local);
-            if (v != 0) K.emplace_back(a.dof, b.dof, v);
+            // Exact zeros of Ke are kept: the pattern must not depend on
+            // the state (a zero of an axis-aligned triangle becomes a
+            // nonzero once it moves, and the analysis would be redone)
+            const double w = a.coefficient*b.coefficient;
+            if (w != 0) K.emplace_back(a.dof, b.dof, w*Ke(a.local, b.local));
         }
     }
 }
@@ -223,8 +226,11 @@ void nmmAssembler::scatter(label r, label c, const matrix66& Ke, triplets& K) co
     {
         for (const auto& b : cols)
         {
-            const double v = a.coefficient*b.coefficient*Ke(a.local, b.local);
-            if (v != 0) K.emplace_back(a.dof, b.dof, v);
+            // Exact zeros of Ke are kept: the pattern must not depend on
+            // the state (a zero of an axis-aligned triangle becomes a
+            // nonzero once it moves, and the analysis would be redone)
+            const double w = a.coefficient*b.coefficient;
+            if (w != 0) K.emplace_back(a.dof, b.dof, w*Ke(a.local, b.local));
         }
     }
 }
