@@ -7,6 +7,8 @@
 #include "nmmSolid/io/dictionary/keywordTable.H"
 
 #include <algorithm>
+#include <atomic>
+#include <thread>
 #include <numeric>
 #include <tuple>
 
@@ -90,6 +92,28 @@ struct segmentTable
         }
     }
 };
+
+
+//- f(0) ... f(n - 1) on every hardware thread, items handed out in
+//  small chunks; f must only write to its own item
+template<class Function>
+void parallelFor(std::size_t n, Function f)
+{
+    const std::size_t nThreads = std::max(1u, std::thread::hardware_concurrency());
+    std::atomic<std::size_t> next{0};
+    constexpr std::size_t chunk = 64;
+    const auto work = [&]
+    {
+        for (std::size_t first; (first = next.fetch_add(chunk)) < n;)
+        {
+            for (std::size_t k = first; k < std::min(n, first + chunk); ++k) f(k);
+        }
+    };
+    std::vector<std::thread> threads;
+    for (std::size_t i = 1; i < nThreads; ++i) threads.emplace_back(work);
+    work();
+    for (auto& t : threads) t.join();
+}
 
 
 manifoldElement::baryLoop wholeTriangle()
@@ -321,6 +345,46 @@ physicalCover::physicalCover
 }
 
 
+void physicalCover::addElement
+(
+    const element& proto,
+    const manifoldElement::triangleNodes& T,
+    const void* segmentTablePtr,
+    cutPiece& piece,
+    std::vector<std::vector<cutPiece::edgeStretch>>& stretches
+)
+{
+    const auto& table = *static_cast<const segmentTable*>(segmentTablePtr);
+    element e = proto;
+    e.block = piece.block;
+    e.loops = std::move(piece.loops);
+    e.moments = elementMoments(T, e.loops);
+    e.areaRatio = manifoldElement::areaRatio(T, e.moments);
+    for (const auto& f : piece.faces)
+    {
+        const cutSegment& s = table.segments[f.segment];
+        boundarySegment b;
+        b.element = label(elements_.size());
+        b.p = f.p;
+        b.q = f.q;
+        if (s.type == cutSegment::kind::blockEdge)
+        {
+            b.kind = segmentKind::blockEdge;
+            b.edge = table.edges[s.id];
+        }
+        else
+        {
+            b.kind = segmentKind::jointFace;
+            b.face = table.joints[s.id];
+            b.face.side = f.sameDirection ? jointSide::left : jointSide::right;
+        }
+        segments_.push_back(b);
+    }
+    stretches.push_back(std::move(piece.stretches));
+    elements_.push_back(std::move(e));
+}
+
+
 physicalCover::physicalCover
 (
     const mathematicalCover& cover,
@@ -333,9 +397,32 @@ physicalCover::physicalCover
     const auto touching = search.trianglesTouched(table.segments);
     const auto ownerOf = [&](const Eigen::Vector2d& x) { return search.blockAt(x); };
 
-    // Elements, triangle by triangle
+    // The cut triangles are independent: cut them on every core, then
+    // collect the elements in triangle order (the result does not depend
+    // on the number of threads)
+    std::vector<label> cut;
+    for (label t = 0; t < label(cover.nTriangles()); ++t)
+    {
+        if (touching.size(t) > 0) cut.push_back(t);
+    }
+    stats_.nCutTriangles = cut.size();
+    std::vector<std::vector<cutPiece>> cutPieces(cut.size());
+    parallelFor(cut.size(), [&](std::size_t k)
+    {
+        element proto;
+        proto.triangle = cut[k];
+        std::vector<cutSegment> local;
+        for (const label s : touching.range(cut[k])) local.push_back(table.segments[s]);
+        cutPieces[k] = cutTriangle(triangleOf(cover, proto), local, ownerOf);
+        // Faces name the table's segments, not the local list's
+        for (auto& piece : cutPieces[k])
+        {
+            for (auto& f : piece.faces) f.segment = touching.range(cut[k]).first[f.segment];
+        }
+    });
+
     std::vector<stretchList> stretches;
-    std::vector<cutSegment> local;
+    std::size_t nextCut = 0;
     for (label t = 0; t < label(cover.nTriangles()); ++t)
     {
         element proto;
@@ -343,48 +430,18 @@ physicalCover::physicalCover
         const auto T = triangleOf(cover, proto);
 
         std::vector<cutPiece> pieces;
-        if (touching.size(t) == 0)
+        if (nextCut < cut.size() && cut[nextCut] == t)
+        {
+            pieces = std::move(cutPieces[nextCut++]);
+        }
+        else
         {
             const int owner = ownerOf(T.rowwise().mean());
             if (owner >= 0) pieces.push_back(wholePiece(owner));
         }
-        else
-        {
-            ++stats_.nCutTriangles;
-            local.clear();
-            for (const label s : touching.range(t)) local.push_back(table.segments[s]);
-            pieces = cutTriangle(T, local, ownerOf);
-        }
-
         for (cutPiece& piece : pieces)
         {
-            element e = proto;
-            e.block = piece.block;
-            e.loops = std::move(piece.loops);
-            e.moments = elementMoments(T, e.loops);
-            e.areaRatio = manifoldElement::areaRatio(T, e.moments);
-            for (const auto& f : piece.faces)
-            {
-                const cutSegment& s = local[f.segment];
-                boundarySegment b;
-                b.element = label(elements_.size());
-                b.p = f.p;
-                b.q = f.q;
-                if (s.type == cutSegment::kind::blockEdge)
-                {
-                    b.kind = segmentKind::blockEdge;
-                    b.edge = table.edges[s.id];
-                }
-                else
-                {
-                    b.kind = segmentKind::jointFace;
-                    b.face = table.joints[s.id];
-                    b.face.side = f.sameDirection ? jointSide::left : jointSide::right;
-                }
-                segments_.push_back(b);
-            }
-            stretches.push_back(std::move(piece.stretches));
-            elements_.push_back(std::move(e));
+            addElement(proto, T, &table, piece, stretches);
         }
     }
 

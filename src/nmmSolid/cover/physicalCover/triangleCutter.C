@@ -6,6 +6,9 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <array>
+#include <map>
+#include <optional>
+#include <tuple>
 
 namespace nmm
 {
@@ -38,6 +41,9 @@ struct cutContext
     K::FT area2;    // twice the signed area of T
     const std::vector<cutSegment>& segments;
     const std::function<int(const Eigen::Vector2d&)>& ownerOf;
+    //- Input segments of each inserted curve: the two grains that share
+    //  an edge give it twice, and it is inserted once
+    std::vector<std::vector<int>> groups;
 
     manifoldElement::baryPoint bary(const K::Point_2& p) const
     {
@@ -52,7 +58,44 @@ struct cutContext
 };
 
 
-arrangement buildArrangement(const cutContext& c)
+//- Group the input segments that are the same segment (either way round)
+void groupSegments(cutContext& c)
+{
+    const auto key = [](const cutSegment& s)
+    {
+        const bool ordered = std::tie(s.a.x(), s.a.y()) < std::tie(s.b.x(), s.b.y());
+        const Eigen::Vector2d& lo = ordered ? s.a : s.b;
+        const Eigen::Vector2d& hi = ordered ? s.b : s.a;
+        return std::array<double, 4>{lo.x(), lo.y(), hi.x(), hi.y()};
+    };
+    std::map<std::array<double, 4>, int> groupOf;
+    for (int i = 0; i < int(c.segments.size()); ++i)
+    {
+        const auto [it, added] = groupOf.try_emplace(key(c.segments[i]), int(c.groups.size()));
+        if (added) c.groups.emplace_back();
+        c.groups[it->second].push_back(i);
+    }
+}
+
+
+//- A segment with both ends in T (or on its boundary) needs no clipping,
+//  which would construct new points
+std::optional<K::Segment_2> clipped(const K::Segment_2& s, const K::Triangle_2& tri)
+{
+    if (tri.bounded_side(s.source()) != CGAL::ON_UNBOUNDED_SIDE
+     && tri.bounded_side(s.target()) != CGAL::ON_UNBOUNDED_SIDE)
+    {
+        return s;
+    }
+    const auto result = CGAL::intersection(s, tri);
+    if (!result) return std::nullopt;
+    // A segment that only touches T at a point does not cut it
+    if (const auto* piece = boost::get<K::Segment_2>(&*result)) return *piece;
+    return std::nullopt;
+}
+
+
+arrangement buildArrangement(cutContext& c)
 {
     std::vector<traits::Curve_2> curves;
     for (int k = 0; k < nTriangleEdges; ++k)
@@ -60,20 +103,39 @@ arrangement buildArrangement(const cutContext& c)
         curves.emplace_back(K::Segment_2(c.nodes[k], c.nodes[(k + 1)%3]), k);
     }
     const K::Triangle_2 tri(c.nodes[0], c.nodes[1], c.nodes[2]);
-    for (std::size_t i = 0; i < c.segments.size(); ++i)
+    groupSegments(c);
+    for (std::size_t g = 0; g < c.groups.size(); ++g)
     {
-        const K::Segment_2 s(exactPoint(c.segments[i].a), exactPoint(c.segments[i].b));
-        const auto clipped = CGAL::intersection(s, tri);
-        if (!clipped) continue;
-        // A segment that only touches T at a point does not cut it
-        if (const auto* piece = boost::get<K::Segment_2>(&*clipped))
-        {
-            curves.emplace_back(*piece, nTriangleEdges + int(i));
-        }
+        const cutSegment& s = c.segments[c.groups[g].front()];
+        const auto piece = clipped(K::Segment_2(exactPoint(s.a), exactPoint(s.b)), tri);
+        if (piece) curves.emplace_back(*piece, nTriangleEdges + int(g));
     }
     arrangement arr;
     CGAL::insert(arr, curves.begin(), curves.end());
     return arr;
+}
+
+
+//- Call f(i) for every input segment i that the half-edge lies on
+template<class Function>
+void forEachSegment(const cutContext& c, halfedgeHandle h, Function f)
+{
+    for (const int id : h->curve().data())
+    {
+        if (id < nTriangleEdges) continue;
+        for (const int i : c.groups[id - nTriangleEdges]) f(i);
+    }
+}
+
+
+//- The edge of T the half-edge lies on, or -1
+int triangleEdgeOf(halfedgeHandle h)
+{
+    for (const int id : h->curve().data())
+    {
+        if (id < nTriangleEdges) return id;
+    }
+    return -1;
 }
 
 
@@ -97,16 +159,21 @@ bool sameDirection(const cutContext& c, halfedgeHandle h, int i)
 //  block, -2 when the edges do not tell
 int ownerFromEdges(const cutContext& c, halfedgeHandle h, int current)
 {
-    for (const int id : h->curve().data())
+    int owner = -2;
+    forEachSegment(c, h, [&](int i)
     {
-        if (id < nTriangleEdges) continue;
-        const int i = id - nTriangleEdges;
+        if (owner >= 0) return;
         const cutSegment& s = c.segments[i];
-        if (s.type == cutSegment::kind::joint) return s.block;
-        if (sameDirection(c, h, i)) return s.block;
-        if (current == -2) current = -1;
-    }
-    return current;
+        if (s.type == cutSegment::kind::joint || sameDirection(c, h, i))
+        {
+            owner = s.block;
+        }
+        else if (current == -2)
+        {
+            current = -1;
+        }
+    });
+    return owner >= 0 ? owner : current;
 }
 
 
@@ -158,16 +225,9 @@ void recordEdge(const cutContext& c, halfedgeHandle h, cutPiece& piece)
 {
     const auto p = c.bary(h->source()->point());
     const auto q = c.bary(h->target()->point());
-    int triangleEdge = -1;
     bool boundary = false;
-    for (const int id : h->curve().data())
+    forEachSegment(c, h, [&](int i)
     {
-        if (id < nTriangleEdges)
-        {
-            triangleEdge = id;
-            continue;
-        }
-        const int i = id - nTriangleEdges;
         const bool same = sameDirection(c, h, i);
         boundary = true;
         // Only this piece's own side of a block edge is its boundary
@@ -175,7 +235,8 @@ void recordEdge(const cutContext& c, halfedgeHandle h, cutPiece& piece)
         {
             piece.faces.push_back({p, q, i, same});
         }
-    }
+    });
+    const int triangleEdge = triangleEdgeOf(h);
     if (triangleEdge >= 0 && !boundary)
     {
         const int next = (triangleEdge + 1)%3;
