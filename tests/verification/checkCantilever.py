@@ -46,6 +46,19 @@ def tipDeflection(f, beam):
     return float(np.interp(0.0, y[order], uy[order]))
 
 
+def errors(caseDir):
+    """Error measures of one case's last frame, as numbers (no pass/fail):
+    h, relative tip deflection error, relative L2 and energy errors."""
+    beam = cf.cantilever
+    lam, mu = cf.planeModuli(beam.E, beam.nu, beam.planeStress)
+    f = nf.readFrame(nf.readSeries(caseDir)[-1][1])
+    tip = tipDeflection(f, beam)
+    return {"h": nf.cellSize(f),
+            "tipError": abs(tip - beam.tipDeflection())/abs(beam.tipDeflection()),
+            "L2": nf.l2Error(f, beam.displacement),
+            "energy": nf.energyError(f, beam.stress, lam, mu)}
+
+
 def main(argv):
     if not argv or argv[0] in ("-h", "-help", "--help"):
         print(__doc__)

@@ -26,6 +26,23 @@ import nmmFrames as nf  # noqa: E402
 TOL = 1e-10
 
 
+def errors(caseDir):
+    """Error measures over all frames with t > 0, as numbers (no
+    pass/fail): the largest relative errors of D_y and U_y."""
+    c = cf.freeFall
+    worstD = worstU = 0.0
+    for t, path in nf.readSeries(caseDir):
+        if t <= 0:
+            continue
+        f = nf.readFrame(path)
+        dy = c.displacementY(t)
+        worstD = max(worstD, float(np.abs(f.D[:, 1] - dy).max()/abs(dy)))
+        if f.U is not None:
+            vy = c.velocityY(t)
+            worstU = max(worstU, float(np.abs(f.U[:, 1] - vy).max()/abs(vy)))
+    return {"DyError": worstD, "UyError": worstU}
+
+
 def main(argv):
     if len(argv) != 1 or argv[0] in ("-h", "-help", "--help"):
         print(__doc__)

@@ -42,6 +42,31 @@ def hoop(x, y, sxx, syy, sxy):
     return (sxx*y*y + syy*x*x - 2*sxy*x*y)/r2
 
 
+def errors(caseDir):
+    """Error measures of one case's last frame, as numbers (no pass/fail):
+    h and the relative errors of the mean u_r(a), u_r(b) and of the
+    extrapolated sigma_t(a), as main() computes them."""
+    c = cf.lame
+    f = nf.readFrame(nf.readSeries(caseDir)[-1][1])
+    h = nf.cellSize(f)
+    R = np.hypot(f.X[:, 0], f.X[:, 1])
+    ur = (f.D*f.X).sum(axis=1)/R
+    out = {"h": h}
+    for name, rad in (("a", c.a), ("b", c.b)):
+        on = np.abs(R - rad) < 1e-6*c.b
+        exact = float(c.radialDisplacement(rad))
+        out["urError_" + name] = abs(float(ur[on].mean()) - exact)/abs(exact)
+    cc = f.cellCentroid
+    rc = np.hypot(cc[:, 0], cc[:, 1])
+    band = rc - c.a < 3*h
+    sxx, syy, sxy = nf.cellStress(f)
+    st = hoop(cc[:, 0], cc[:, 1], sxx, syy, sxy)
+    sta = nf.extrapolate((1 - (c.a/rc)**2)[band], st[band], area=f.cellArea[band])
+    exact = float(c.polarStress(c.a)[1])
+    out["sigmaTError"] = abs(sta - exact)/abs(exact)
+    return out
+
+
 def main(argv):
     if len(argv) != 1 or argv[0] in ("-h", "-help", "--help"):
         print(__doc__)

@@ -61,6 +61,19 @@ def peakFromPoints(f, k):
     return float(f.pointData["sigma"][i, 0])
 
 
+def errors(caseDir):
+    """Error measures of one case's last frame, as numbers (no pass/fail):
+    h, relative error of the extrapolated peak sigma_xx(0, a), relative L2
+    and energy errors."""
+    k = cf.kirsch
+    lam, mu = cf.planeModuli(k.E, k.nu, k.planeStress)
+    f = nf.readFrame(nf.readSeries(caseDir)[-1][1])
+    return {"h": nf.cellSize(f),
+            "peakError": abs(peakFromCells(f, k) - k.peak())/abs(k.peak()),
+            "L2": nf.l2Error(f, k.displacement),
+            "energy": nf.energyError(f, k.stress, lam, mu)}
+
+
 def main(argv):
     if not argv or argv[0] in ("-h", "-help", "--help"):
         print(__doc__)

@@ -59,6 +59,21 @@ def faces(f, a, angle):
     return profile(upper), profile(lower)
 
 
+def errors(caseDir, angleDeg):
+    """Error measures of one case's last frame, as numbers (no pass/fail):
+    h and the relative errors of w(0) and w(a/2)."""
+    c = cf.sneddon
+    f = nf.readFrame(nf.readSeries(caseDir)[-1][1])
+    (su, wu), (sl, wl) = faces(f, c.a, math.radians(angleDeg))
+
+    def opening(s):
+        return float(np.interp(s, su, wu) - np.interp(s, sl, wl))
+    w2 = float(c.opening(np.float64(c.a/2)))
+    return {"h": nf.cellSize(f),
+            "w0Error": abs(opening(0.0) - c.centreOpening())/c.centreOpening(),
+            "wHalfError": abs(opening(c.a/2) - w2)/w2}
+
+
 def main(argv):
     if len(argv) != 2 or argv[0] in ("-h", "-help", "--help"):
         print(__doc__)

@@ -34,6 +34,41 @@ import nmmFrames as nf  # noqa: E402
 TOL = 0.02
 
 
+def errors(caseDir):
+    """Error measures of the time series, as numbers (no pass/fail): the
+    relative errors of the arrival time at the station (half U_x; D_x
+    line) and of c from the D_x slope, as main() computes them (nan when
+    a measure cannot be formed)."""
+    c = cf.waveBar
+    series = nf.readSeries(caseDir)
+    last = nf.readFrame(series[-1][1])
+    xs = last.X[np.argmin(np.abs(last.X[:, 0] - c.station)), 0]
+    idx = np.flatnonzero(np.abs(last.X[:, 0] - xs) < 1e-6*c.L)
+    times, dx, ux = [], [], []
+    for t, path in series:
+        f = nf.readFrame(path)
+        times.append(t)
+        dx.append(f.D[idx, 0].mean())
+        ux.append(f.U[idx, 0].mean() if f.U is not None else np.nan)
+    times, dx, ux = np.array(times), np.array(dx), np.array(ux)
+    speed = c.c()
+    ta = xs/speed
+    out = {"arrivalUError": np.nan, "arrivalDError": np.nan, "cError": np.nan}
+    half = 0.5*c.p0*speed/c.E
+    k = np.flatnonzero(ux >= half)
+    if len(k) and k[0] > 0:
+        i = k[0]
+        tc = times[i - 1] + (half - ux[i - 1])*(times[i] - times[i - 1]) \
+            / (ux[i] - ux[i - 1])
+        out["arrivalUError"] = abs(tc - ta)/ta
+    window = (times >= ta + 1e-3) & (times <= min(times[-1], (2*c.L - xs)/speed))
+    if window.sum() >= 3:
+        slope, icpt = np.polyfit(times[window], dx[window], 1)
+        out["arrivalDError"] = abs(-icpt/slope - ta)/ta
+        out["cError"] = abs(slope*c.E/c.p0 - speed)/speed
+    return {k: float(v) for k, v in out.items()}
+
+
 def main(argv):
     if len(argv) != 1 or argv[0] in ("-h", "-help", "--help"):
         print(__doc__)

@@ -4,12 +4,12 @@
 Usage (from anywhere; plain python3, standard library only):
     tutorials/verification/makeCases.py
 
-Writes system/, constant/ and 0/ of cantilever, plateHole, lame, freeFall,
-waveBar and sneddon/angle{0,30,45}. The files it writes are committed, so
-running it is only needed after changing a parameter here; the README of
-each case explains the choices. The polygons of the curved boundaries are
-written out in full (64 chords per quarter circle, 256 for the plate
-with a hole).
+Writes system/, constant/ and 0/ of cantilever, plateHole, plateHoleFoam,
+lame, freeFall, waveBar and sneddon/angle{0,30,45}. The files it writes
+are committed, so running it is only needed after changing a parameter
+here; the README of each case explains the choices. The polygons of the
+curved boundaries are written out in full (64 chords per quarter circle,
+256 for the plates with a hole).
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
@@ -390,9 +390,52 @@ def sneddon(angleDeg):
 """)
 
 
+# --------------------------------------------------------------------------
+def plateHoleFoam():
+    """OpenFOAM's stressAnalysis/solidDisplacementFoam/plateHole as it
+    ships: quarter plate 2 x 2, hole r = 0.5, traction 10 kPa in x on the
+    right edge, symmetry on the left and bottom edges, top edge and hole
+    traction-free; E = 200 GPa, nu = 0.3, rho = 7854, plane stress."""
+    c = "plateHoleFoam"
+    controlDict(c, 1, 1, "Static: one step, loads evaluated at t = 1")
+    staticSolution(c, smallDisplacement=True)
+    mechanicalProperties(c, True, "steel", "2e+11", "0.3", "7854")
+    pts = [(0.5, 0), (2, 0), (2, 2), (0, 2), (0, 0.5)] \
+        + arc(0.5, math.pi/2, 0.0, 4*NARC)
+    meshDict(c, """\
+    plate
+    {
+        material steel;
+        // (0.5 0) (2 0) (2 2) (0 2) (0 0.5), then the hole r = 0.5 back
+        // to (0.5 0) (256 chords)
+        polygon%s;
+    }
+""" % polygon(pts), """\
+    right       { type box; min (1.999999 -1); max (3 3); }
+    left        { type box; min (-1e-6 0.25); max (1e-6 3); }
+    down        { type box; min (0.25 -1e-6); max (3 1e-6); }
+""", """\
+    type        structured;
+    cellSize    0.025;
+""")
+    D(c, """\
+    // OpenFOAM's tutorial: uniform traction on the right edge, the top
+    // edge and the hole traction-free (no patch: natural boundary)
+    right
+    {
+        type        tractionDisplacement;
+        traction    uniform (10000 0 0);
+        pressure    uniform 0;
+    }
+    left        { type fixedNormal; }
+    down        { type fixedNormal; }
+""")
+
+
 if __name__ == "__main__":
     cantilever()
     plateHole()
+    plateHoleFoam()
     lame()
     freeFall()
     waveBar()
