@@ -307,6 +307,24 @@ TEST(dictionary, includeChainAndOptionalIncludes)
 }
 
 
+TEST(dictionary, includeInAValueMustBeBalanced)
+{
+    tempDir dir("nmmDictTest");
+    dir.write("grains", "g1 { material rock; } g2 { material rock; }\n");
+    dir.write("broken", "a (1 2];\n");
+    const auto good = dir.write("good", "blocks ( #include \"grains\" );\n");
+    const dictionary d = dictionary::read(good);
+    EXPECT_EQ(dictionary::entryList(d.lookupEntry("blocks")).size(), 2u);
+
+    // The included '(' is never closed: the value could not be written back
+    const auto bad = dir.write("bad", "w #include \"broken\"\n2 3];\n");
+    const IOerror err = nmm::test::errorOf([&] { dictionary::read(bad); });
+    EXPECT_NE(std::string(err.what()).find("leaves '(' unclosed"), std::string::npos)
+        << err.what();
+    EXPECT_EQ(err.keyword(), "w");
+}
+
+
 TEST(dictionary, includeErrors)
 {
     tempDir dir("nmmDictTest");

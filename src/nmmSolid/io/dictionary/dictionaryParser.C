@@ -396,6 +396,7 @@ tokenList dictionaryParser::readValue
             {
                 const std::size_t first = value.size();
                 includeTokens(lx, d, t, value);
+                requireBalanced(value, first, t, key);
                 if (open.empty()) rejectLooseEntries(value, first, t, key);
             }
             else
@@ -406,6 +407,45 @@ tokenList dictionaryParser::readValue
             continue;
         }
         value.push_back(std::move(t));
+    }
+}
+
+
+void dictionaryParser::requireBalanced
+(
+    const tokenList& value,
+    std::size_t first,
+    const token& dir,
+    const token& key
+) const
+{
+    // The included text is spliced into the value: brackets it opened
+    // and did not close would leave a value that cannot be written back
+    std::vector<const token*> open;
+    for (std::size_t i = first; i < value.size(); ++i)
+    {
+        const token& t = value[i];
+        if (t.isPunct('(') || t.isPunct('{'))
+        {
+            open.push_back(&t);
+        }
+        else if (t.isPunct(')') || t.isPunct('}'))
+        {
+            if (open.empty() || open.back()->text != matchingOpen(t.text[0]))
+            {
+                throw IOerror("'" + t.text + "' in the file included by "
+                    + dir.text + " does not match an opening bracket of that "
+                    "file", dir.where, key.text);
+            }
+            open.pop_back();
+        }
+    }
+    if (!open.empty())
+    {
+        throw IOerror("the file included by " + dir.text + " leaves '"
+            + open.back()->text + "' unclosed (opened at line "
+            + std::to_string(open.back()->where.line) + " of that file)",
+            dir.where, key.text);
     }
 }
 
