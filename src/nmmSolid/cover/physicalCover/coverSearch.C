@@ -18,6 +18,28 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 K::Point_2 kernelPoint(const Eigen::Vector2d& x) { return {x.x(), x.y()}; }
 
+//- Lists of the second members of sorted (list, item) pairs, n lists
+coverSearch::compressedLists compress
+(
+    const std::vector<std::pair<coverSearch::label, coverSearch::label>>& pairs,
+    std::size_t n
+)
+{
+    coverSearch::compressedLists lists;
+    lists.offsets.assign(n + 1, 0);
+    lists.items.resize(pairs.size());
+    for (std::size_t k = 0; k < pairs.size(); ++k)
+    {
+        ++lists.offsets[pairs[k].first + 1];
+        lists.items[k] = pairs[k].second;
+    }
+    for (std::size_t k = 1; k < lists.offsets.size(); ++k)
+    {
+        lists.offsets[k] += lists.offsets[k - 1];
+    }
+    return lists;
+}
+
 } // End anonymous namespace
 
 
@@ -43,17 +65,7 @@ void coverSearch::bucketGrid::build
         }
     }
     std::sort(pairs.begin(), pairs.end());
-    buckets.offsets.assign(std::size_t(nx)*ny + 1, 0);
-    buckets.items.resize(pairs.size());
-    for (std::size_t k = 0; k < pairs.size(); ++k)
-    {
-        ++buckets.offsets[pairs[k].first + 1];
-        buckets.items[k] = pairs[k].second;
-    }
-    for (std::size_t k = 1; k < buckets.offsets.size(); ++k)
-    {
-        buckets.offsets[k] += buckets.offsets[k - 1];
-    }
+    buckets = compress(pairs, std::size_t(nx)*ny);
 }
 
 
@@ -149,20 +161,7 @@ coverSearch::compressedLists coverSearch::trianglesTouched
         touchedBy(segments[s], stamp, s, pairs);
     }
     std::sort(pairs.begin(), pairs.end());
-
-    compressedLists lists;
-    lists.offsets.assign(cover_.nTriangles() + 1, 0);
-    lists.items.resize(pairs.size());
-    for (std::size_t k = 0; k < pairs.size(); ++k)
-    {
-        ++lists.offsets[pairs[k].first + 1];
-        lists.items[k] = pairs[k].second;
-    }
-    for (std::size_t k = 1; k < lists.offsets.size(); ++k)
-    {
-        lists.offsets[k] += lists.offsets[k - 1];
-    }
-    return lists;
+    return compress(pairs, cover_.nTriangles());
 }
 
 

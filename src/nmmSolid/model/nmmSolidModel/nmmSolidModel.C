@@ -290,9 +290,7 @@ std::vector<double> nmmSolidModel::blockAreas() const
     for (std::size_t e = 0; e < els.size(); ++e)
     {
         const auto T = assembler_->currentTriangle(label(e), patchD);
-        const double scale = manifoldElement::signedArea(T)
-            /manifoldElement::signedArea(assembler_->referenceTriangle(label(e)));
-        area[els[e].block] += els[e].moments.area*scale;
+        area[els[e].block] += assembler_->currentArea(label(e), T);
     }
     return area;
 }

@@ -171,6 +171,14 @@ triangleNodes nmmAssembler::currentTriangle
 }
 
 
+double nmmAssembler::currentArea(label e, const triangleNodes& T) const
+{
+    // The polygon moves with the linear field of its triangle
+    return pc_.elements()[e].moments.area*manifoldElement::signedArea(T)
+        /manifoldElement::signedArea(referenceTriangle(e));
+}
+
+
 std::vector<nmmAssembler::dofTerm> nmmAssembler::dofTerms(label e) const
 {
     std::vector<dofTerm> terms;
@@ -253,9 +261,7 @@ void nmmAssembler::addElements
     for (label e = 0; e < label(pc_.nElements()); ++e)
     {
         const auto T = currentTriangle(e, patchD);
-        const double scale = manifoldElement::signedArea(T)
-            /manifoldElement::signedArea(referenceTriangle(e));
-        const double area = pc_.elements()[e].moments.area*scale;
+        const double area = currentArea(e, T);
         const matrix36 B = manifoldElement::strainMatrix(T);
         scatter(e, manifoldElement::stiffness(T, area, materials_[e].D, thickness_), K);
         const vector6 fInt = area*thickness_*B.transpose()*s.sigma[e].head<3>();
@@ -295,11 +301,9 @@ std::vector<double> nmmAssembler::nitscheParameters(const solidState& s) const
     {
         if (length[e] == 0) continue;
         const auto T = currentTriangle(e, patchD);
-        const double scale = manifoldElement::signedArea(T)
-            /manifoldElement::signedArea(referenceTriangle(e));
         const double area = std::max
         (
-            pc_.elements()[e].moments.area*scale,
+            currentArea(e, T),
             nitscheAreaFloor*std::abs(manifoldElement::signedArea(T))
         );
         gamma[e] = nitscheSafety*nitscheBound*materials_[e].lambdaMax*length[e]/area;
