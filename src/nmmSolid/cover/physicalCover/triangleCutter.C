@@ -280,7 +280,8 @@ std::vector<cutPiece> cutTriangle
         {exactPoint(T.col(0)), exactPoint(T.col(1)), exactPoint(T.col(2))},
         0,
         segments,
-        ownerOf
+        ownerOf,
+        {}
     };
     c.area2 = 2*CGAL::area(c.nodes[0], c.nodes[1], c.nodes[2]);
 
