@@ -253,11 +253,11 @@ void nmmAssembler::scatter(label e, const vector6& fe, Eigen::VectorXd& f) const
 void nmmAssembler::addElements
 (
     const solidState& s,
+    const Eigen::Matrix2Xd& patchD,
     triplets& K,
     Eigen::VectorXd& f
 ) const
 {
-    const auto patchD = patchDisplacements(s.D);
     for (label e = 0; e < label(pc_.nElements()); ++e)
     {
         const auto T = currentTriangle(e, patchD);
@@ -284,10 +284,9 @@ void nmmAssembler::addBodyForce(Eigen::VectorXd& f) const
 }
 
 
-std::vector<double> nmmAssembler::nitscheParameters(const solidState& s) const
+std::vector<double> nmmAssembler::nitscheParameters(const Eigen::Matrix2Xd& patchD) const
 {
     std::vector<double> length(pc_.nElements(), 0.0), gamma(pc_.nElements(), 0.0);
-    const auto patchD = patchDisplacements(s.D);
     for (std::size_t i = 0; i < rules_.size(); ++i)
     {
         const auto* rule = rules_[i];
@@ -315,13 +314,13 @@ std::vector<double> nmmAssembler::nitscheParameters(const solidState& s) const
 void nmmAssembler::addSegments
 (
     const solidState& s,
+    const Eigen::Matrix2Xd& patchD,
     double t1,
     triplets& K,
     Eigen::VectorXd& f
 ) const
 {
-    const auto patchD = patchDisplacements(s.D);
-    const auto gamma = nitscheParameters(s);
+    const auto gamma = nitscheParameters(patchD);
     for (std::size_t i = 0; i < rules_.size(); ++i)
     {
         const boundaryRule* rule = rules_[i];
@@ -451,9 +450,10 @@ nmmAssembler::system nmmAssembler::assemble
     triplets K;
     system sys;
     sys.f = Eigen::VectorXd::Zero(n);
-    addElements(s, K, sys.f);
+    const auto patchD = patchDisplacements(s.D);
+    addElements(s, patchD, K, sys.f);
     addBodyForce(sys.f);
-    addSegments(s, t1, K, sys.f);
+    addSegments(s, patchD, t1, K, sys.f);
 
     sys.K.resize(n, n);
     sys.K.setFromTriplets(K.begin(), K.end());
