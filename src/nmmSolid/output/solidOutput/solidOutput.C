@@ -19,6 +19,9 @@ namespace
 
 using label = physicalCover::label;
 
+//- Elements below which a point's recovery patch takes one ring more
+constexpr std::size_t minimumPatchElements = 6;
+
 //- Weights below this do not tie a point to a patch
 constexpr double weightTolerance = 1e-12;
 
@@ -37,6 +40,9 @@ struct frameBuilder
     std::vector<Eigen::Vector2d> pointD, pointU;
     std::vector<vtkSymmTensor> pointSigma;
     std::vector<int> pointCount;
+    //- Reference position and the patches of each point
+    std::vector<Eigen::Vector2d> pointX;
+    std::vector<std::vector<label>> pointPatches;
     vtkPolygonMesh mesh;
 
     explicit frameBuilder(const nmmSolidModel& m)
@@ -77,6 +83,8 @@ struct frameBuilder
             pointU.push_back(u);
             pointSigma.push_back(vtkSymmTensor::Zero());
             pointCount.push_back(0);
+            pointX.push_back(X);
+            pointPatches.push_back(patches);
         }
         pointSigma[it->second] += sigma;
         ++pointCount[it->second];
@@ -158,6 +166,86 @@ void addCellData(vtkPolygonMesh& mesh, const nmmSolidModel& model,
     mesh.addCellData(vtkDataArray::int32(f::materialId, materialId));
 }
 
+
+//- Element centroids in the reference configuration
+std::vector<Eigen::Vector2d> referenceCentroids(const nmmSolidModel& model)
+{
+    const auto& els = model.elements().elements();
+    std::vector<Eigen::Vector2d> c(els.size());
+    for (std::size_t e = 0; e < els.size(); ++e)
+    {
+        const auto T0 = model.assembler().referenceTriangle(label(e));
+        c[e] = manifoldElement::centroid(T0, els[e].moments);
+    }
+    return c;
+}
+
+
+//- Point stresses recovered from the constant element stresses around a
+//  point (Zienkiewicz-Zhu's idea): a linear field fitted by least squares,
+//  weighted by element area, to the stresses at the centroids of the
+//  elements of the point's patches, and evaluated at the point. On a
+//  boundary the fit extrapolates, where a plain average is only first
+//  order. Points whose elements do not span a plane keep the average.
+void recoverStresses(const nmmSolidModel& model, frameBuilder& b)
+{
+    const auto& els = model.elements().elements();
+    std::vector<std::vector<label>> elementsOf(model.elements().nPatches());
+    for (std::size_t e = 0; e < els.size(); ++e)
+    {
+        for (const label p : els[e].patches) elementsOf[p].push_back(label(e));
+    }
+    const auto centroid = referenceCentroids(model);
+
+    std::vector<label> around;
+    for (std::size_t p = 0; p < b.pointX.size(); ++p)
+    {
+        around.clear();
+        for (const label q : b.pointPatches[p])
+        {
+            around.insert(around.end(), elementsOf[q].begin(), elementsOf[q].end());
+        }
+        std::sort(around.begin(), around.end());
+        around.erase(std::unique(around.begin(), around.end()), around.end());
+        // A corner of the material sees few elements: one ring more
+        if (around.size() < minimumPatchElements)
+        {
+            const std::vector<label> first = around;
+            for (const label e : first)
+            {
+                for (const label q : els[e].patches)
+                {
+                    around.insert(around.end(), elementsOf[q].begin(), elementsOf[q].end());
+                }
+            }
+            std::sort(around.begin(), around.end());
+            around.erase(std::unique(around.begin(), around.end()), around.end());
+        }
+
+        Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+        Eigen::Matrix<double, 3, 6> rhs = Eigen::Matrix<double, 3, 6>::Zero();
+        double scale = 0;
+        for (const label e : around)
+        {
+            const Eigen::Vector2d d = centroid[e] - b.pointX[p];
+            scale = std::max(scale, d.norm());
+        }
+        if (around.size() < 3 || scale == 0) continue;
+        for (const label e : around)
+        {
+            const double w = els[e].moments.area;
+            const Eigen::Vector3d row(1, (centroid[e] - b.pointX[p]).x()/scale,
+                                         (centroid[e] - b.pointX[p]).y()/scale);
+            A += w*row*row.transpose();
+            rhs += w*row*paraviewOrder(model.state().sigma[e]).transpose();
+        }
+        // A patch whose centroids (nearly) lie on a line cannot fix a plane
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(A);
+        if (eig.eigenvalues()[0] < 1e-6*eig.eigenvalues()[2]) continue;
+        b.pointSigma[p] = (A.ldlt().solve(rhs)).row(0).transpose();
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -183,6 +271,7 @@ vtkPolygonMesh solidOutput::frame(const nmmSolidModel& model)
     {
         b.pointSigma[p] /= b.pointCount[p];
     }
+    recoverStresses(model, b);
     namespace f = vtkFieldNames;
     b.mesh.addPointData(vtkDataArray::vector(f::displacement, b.pointD));
     b.mesh.addPointData(vtkDataArray::vector(f::velocity, b.pointU));
