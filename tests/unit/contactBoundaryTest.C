@@ -72,6 +72,14 @@ TEST(contactBoundaries, loopsFollowTheBlocksWithMaterialOnTheLeft)
     EXPECT_NEAR(length(loops[0]), 4.0, 1e-14);
     // Crossings of the cover lines are vertices too
     EXPECT_GT(loops[0].vertices.size(), 4u);
+    // Each edge ends, in its own element, where the next vertex is
+    for (std::size_t i = 0; i < loops[0].nEdges(); ++i)
+    {
+        const auto& v = loops[0].edgeStart(i);
+        const auto T = nmm::physicalCover::triangleOf(*c.cover, c.pc->elements()[v.element]);
+        EXPECT_LT((nmm::manifoldElement::toCartesian(T, v.edgeEndLambda)
+            - loops[0].edgeEnd(i).x).norm(), 1e-14);
+    }
     EXPECT_EQ(loops[1].type, contactLoop::kind::hole);
     EXPECT_NEAR(signedArea(loops[1]), -0.09, 1e-14);
 

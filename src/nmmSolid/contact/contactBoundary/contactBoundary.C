@@ -53,6 +53,7 @@ void appendPieces
         contactVertex v;
         v.element = s->element;
         v.lambda = s->p;
+        v.edgeEndLambda = s->q;
         loop.vertices.push_back(v);
     }
 }
@@ -76,6 +77,7 @@ contactVertex lastPoint
     contactVertex v;
     v.element = last->element;
     v.lambda = last->q;
+    v.edgeEndLambda = last->q;
     return v;
 }
 
