@@ -189,21 +189,18 @@ class pairSearch
         const double lo = std::max(0.0, sb1), hi = std::min(la, sb0);
         if (hi - lo <= 1e-9*std::max(la, lb)) return;
 
-        const bool aShorter = la <= lb;
+        // Ends that coincide up to rounding are one point: the lower loop's
+        // vertex is taken there, the same for every pair of cut edges
+        const double eps = 1e-9*std::max(la, lb);
         // Low end: a's start if it lies inside b, else b's end
-        addEnd(0.0 >= sb1, sb1 >= 0.0, aShorter, ea, 0, eb, 1);
+        addEnd(sb1 <= eps, ea, 0, eb, 1);
         // High end: a's end if it lies inside b, else b's start
-        addEnd(la <= sb0, sb0 <= la, aShorter, ea, 1, eb, 0);
+        addEnd(sb0 >= la - eps, ea, 1, eb, 0);
     }
 
-    void addEnd
-    (
-        bool aInside, bool bInside, bool aShorter,
-        int ea, int aEnd, int eb, int bEnd
-    )
+    void addEnd(bool aInside, int ea, int aEnd, int eb, int bEnd)
     {
-        const bool useA = aInside && (aShorter || !bInside);
-        contactCandidate c = useA
+        contactCandidate c = aInside
           ? make(la_, edgeVertex(la_, ea, aEnd), lb_, eb)
           : make(lb_, edgeVertex(lb_, eb, bEnd), la_, ea);
         if (admissible(c))
