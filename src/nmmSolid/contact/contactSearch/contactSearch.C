@@ -1,0 +1,459 @@
+#include "nmmSolid/contact/contactSearch/contactSearch.H"
+
+#include "nmmSolid/geometry/boxSearch/boxSearch.H"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <tuple>
+
+namespace nmm
+{
+
+namespace
+{
+
+using vec = Eigen::Vector2d;
+using vertexRef = std::pair<int, int>;          // (loop, vertex)
+
+
+int prevVertex(const contactLoop& l, int i)
+{
+    const int n = int(l.vertices.size());
+    if (l.closed) return (i + n - 1)%n;
+    return i == 0 ? -1 : i - 1;
+}
+
+
+int nextVertex(const contactLoop& l, int i)
+{
+    const int n = int(l.vertices.size());
+    if (l.closed) return (i + 1)%n;
+    return i + 1 == n ? -1 : i + 1;
+}
+
+
+//- Outward normal of edge a->b: the material is on the left, so the right
+//  hand points out of it
+vec outwardNormal(const vec& a, const vec& b)
+{
+    const vec s = (b - a).normalized();
+    return vec(s.y(), -s.x());
+}
+
+
+//- Unit directions from vertex i along its own edges (one at the ends of
+//  an open polyline)
+std::vector<vec> edgeDirections(const contactLoop& l, int i)
+{
+    std::vector<vec> result;
+    const vec& x = l.vertices[i].x;
+    for (const int j : {prevVertex(l, i), nextVertex(l, i)})
+    {
+        if (j >= 0 && (l.vertices[j].x - x).norm() > 0)
+        {
+            result.push_back((l.vertices[j].x - x).normalized());
+        }
+    }
+    return result;
+}
+
+
+//- The boundary turns right at vertex i by more than the tolerance: the
+//  material surrounds it, so it cannot be the vertex of a contact
+bool isReflex(const contactLoop& l, int i, double angleTolerance)
+{
+    const int p = prevVertex(l, i);
+    const int q = nextVertex(l, i);
+    if (p < 0 || q < 0) return false;
+    const vec a = l.vertices[i].x - l.vertices[p].x;
+    const vec b = l.vertices[q].x - l.vertices[i].x;
+    const double turn = std::atan2(a.x()*b.y() - a.y()*b.x(), a.dot(b));
+    return turn < -angleTolerance;
+}
+
+
+//- How well the vertex's material wedge lies on the outer side of the
+//  candidate edge's line: min over its edge directions of u.n
+double fit(const contactLoop& vl, int v, const contactLoop& el, int e)
+{
+    const vec n = outwardNormal(el.edgeStart(e).x, el.edgeEnd(e).x);
+    double result = 1;
+    for (const vec& u : edgeDirections(vl, v)) result = std::min(result, u.dot(n));
+    return result;
+}
+
+
+//- Gap and projection of vertex v of loop vl against edge e of loop el;
+//  returns the distance to the segment
+double project
+(
+    const std::vector<contactLoop>& loops,
+    contactCandidate& c
+)
+{
+    const vec& x = loops[c.vertexLoop].vertices[c.vertex].x;
+    const vec& a = loops[c.edgeLoop].edgeStart(c.edge).x;
+    const vec& b = loops[c.edgeLoop].edgeEnd(c.edge).x;
+    const vec s = b - a;
+    const double l2 = s.squaredNorm();
+    if (l2 == 0)
+    {
+        // A degenerate edge has no direction, hence no side
+        c.t = 0;
+        c.gap = 0;
+        return std::numeric_limits<double>::infinity();
+    }
+    c.t = std::clamp((x - a).dot(s)/l2, 0.0, 1.0);
+    c.gap = (x - a).dot(outwardNormal(a, b));
+    return (x - (a + c.t*s)).norm();
+}
+
+
+auto key(const contactCandidate& c)
+{
+    return std::make_tuple(c.vertexLoop, c.vertex, c.edgeLoop, c.edge);
+}
+
+
+//- The search within one candidate pair of loops
+class pairSearch
+{
+    const std::vector<contactLoop>& loops_;
+    const double d_;
+    const double angleTolerance_;
+    const int la_, lb_;
+
+    std::vector<contactCandidate> edgeEdge_;
+    std::set<vertexRef> edgeEdgeVertices_;
+
+    std::vector<boxSearch::box> edgeBoxes(const contactLoop& l) const
+    {
+        std::vector<boxSearch::box> result;
+        for (std::size_t e = 0; e < l.nEdges(); ++e)
+        {
+            boxSearch::box b =
+                boxSearch::segmentBox(l.edgeStart(e).x, l.edgeEnd(e).x);
+            b.min().array() -= d_;
+            b.max().array() += d_;
+            result.push_back(b);
+        }
+        return result;
+    }
+
+    bool reflex(int loop, int v) const
+    {
+        return isReflex(loops_[loop], v, angleTolerance_);
+    }
+
+    int edgeVertex(int loop, int e, int end) const
+    {
+        return end == 0 ? e : (e + 1)%int(loops_[loop].vertices.size());
+    }
+
+    contactCandidate make(int vl, int v, int el, int e) const
+    {
+        contactCandidate c;
+        c.vertexLoop = vl;
+        c.vertex = v;
+        c.edgeLoop = el;
+        c.edge = e;
+        return c;
+    }
+
+    //- Distance and side conditions every kept contact satisfies
+    bool admissible(contactCandidate& c) const
+    {
+        const double dist = project(loops_, c);
+        return dist <= d_ && c.gap >= -d_;
+    }
+
+    //- Edge-to-edge: one contact at each end of the overlap of two
+    //  antiparallel edges
+    void edgeEdge(int ea, int eb)
+    {
+        const contactLoop& A = loops_[la_];
+        const contactLoop& B = loops_[lb_];
+        const vec a0 = A.edgeStart(ea).x, a1 = A.edgeEnd(ea).x;
+        const vec b0 = B.edgeStart(eb).x, b1 = B.edgeEnd(eb).x;
+        const double la = (a1 - a0).norm(), lb = (b1 - b0).norm();
+        if (la == 0 || lb == 0) return;
+        const vec s = (a1 - a0)/la;
+        if (s.dot((b1 - b0)/lb) > -std::cos(angleTolerance_)) return;
+
+        // b runs backwards along s: b1 at the low end, b0 at the high end
+        const double sb1 = (b1 - a0).dot(s), sb0 = (b0 - a0).dot(s);
+        const double lo = std::max(0.0, sb1), hi = std::min(la, sb0);
+        if (hi - lo <= 1e-9*std::max(la, lb)) return;
+
+        // Ends that coincide up to rounding are one point: the lower loop's
+        // vertex is taken there, the same for every pair of cut edges
+        const double eps = 1e-9*std::max(la, lb);
+        // Low end: a's start if it lies inside b, else b's end
+        addEnd(sb1 <= eps, ea, 0, eb, 1);
+        // High end: a's end if it lies inside b, else b's start
+        addEnd(sb0 >= la - eps, ea, 1, eb, 0);
+    }
+
+    void addEnd(bool aInside, int ea, int aEnd, int eb, int bEnd)
+    {
+        contactCandidate c = aInside
+          ? make(la_, edgeVertex(la_, ea, aEnd), lb_, eb)
+          : make(lb_, edgeVertex(lb_, eb, bEnd), la_, ea);
+        if (admissible(c))
+        {
+            c.type = contactCandidate::edgeEdge;
+            edgeEdge_.push_back(c);
+            edgeEdgeVertices_.insert({c.vertexLoop, c.vertex});
+        }
+    }
+
+public:
+
+    pairSearch
+    (
+        const std::vector<contactLoop>& loops,
+        double d, double angleTolerance, int la, int lb
+    )
+    :
+        loops_(loops), d_(d), angleTolerance_(angleTolerance), la_(la), lb_(lb)
+    {}
+
+    void run(std::vector<contactCandidate>& out)
+    {
+        const auto edgePairs =
+            boxSearch::pairs(edgeBoxes(loops_[la_]), edgeBoxes(loops_[lb_]));
+
+        // Every (vertex, edge) the edge pairs bring together, both ways
+        std::vector<contactCandidate> candidates;
+        for (const auto& [i, j] : edgePairs)
+        {
+            const int ea = int(i), eb = int(j);
+            for (int end = 0; end < 2; ++end)
+            {
+                candidates.push_back(make(la_, edgeVertex(la_, ea, end), lb_, eb));
+                candidates.push_back(make(lb_, edgeVertex(lb_, eb, end), la_, ea));
+            }
+            edgeEdge(ea, eb);
+        }
+        std::sort(candidates.begin(), candidates.end());
+        candidates.erase
+        (
+            std::unique
+            (
+                candidates.begin(), candidates.end(),
+                [](const auto& x, const auto& y) { return key(x) == key(y); }
+            ),
+            candidates.end()
+        );
+
+        // Vertex-to-vertex groups, keyed by (vertex of a, vertex of b)
+        std::map<std::pair<int, int>, std::vector<contactCandidate>> groups;
+        for (contactCandidate& c : candidates)
+        {
+            if (reflex(c.vertexLoop, c.vertex) || !admissible(c)) continue;
+
+            const vec& x = loops_[c.vertexLoop].vertices[c.vertex].x;
+            bool grouped = false, nearCorner = false;
+            for (int end = 0; end < 2; ++end)
+            {
+                const int w = edgeVertex(c.edgeLoop, c.edge, end);
+                if ((loops_[c.edgeLoop].vertices[w].x - x).norm() > d_) continue;
+                nearCorner = true;
+                if (reflex(c.edgeLoop, w)) continue;
+                grouped = true;
+                const auto g = c.vertexLoop == la_
+                    ? std::make_pair(c.vertex, w) : std::make_pair(w, c.vertex);
+                groups[g].push_back(c);
+            }
+            if (!grouped)
+            {
+                c.type = nearCorner
+                    ? contactCandidate::vertexVertex : contactCandidate::vertexEdge;
+                out.push_back(c);
+            }
+        }
+
+        for (auto& [g, members] : groups)
+        {
+            if
+            (
+                edgeEdgeVertices_.count({la_, g.first})
+             || edgeEdgeVertices_.count({lb_, g.second})
+            )
+            {
+                continue;
+            }
+            const contactCandidate* best = nullptr;
+            double bestFit = -2;
+            for (const contactCandidate& c : members)
+            {
+                const double f =
+                    fit(loops_[c.vertexLoop], c.vertex, loops_[c.edgeLoop], c.edge);
+                if (f > bestFit || (f == bestFit && c < *best))
+                {
+                    best = &c;
+                    bestFit = f;
+                }
+            }
+            contactCandidate c = *best;
+            c.type = contactCandidate::vertexVertex;
+            out.push_back(c);
+        }
+
+        out.insert(out.end(), edgeEdge_.begin(), edgeEdge_.end());
+    }
+};
+
+
+//- Sort, drop repeated (vertex, edge) records (an edge-to-edge record wins),
+//  and keep one record where a vertex lies at the common vertex of two
+//  adjacent edges it was matched with
+std::vector<contactCandidate> tidy
+(
+    const std::vector<contactLoop>& loops,
+    std::vector<contactCandidate> all,
+    double angleTolerance
+)
+{
+    std::sort
+    (
+        all.begin(), all.end(),
+        [](const contactCandidate& x, const contactCandidate& y)
+        {
+            return std::make_tuple(key(x), -int(x.type))
+                 < std::make_tuple(key(y), -int(y.type));
+        }
+    );
+    all.erase
+    (
+        std::unique
+        (
+            all.begin(), all.end(),
+            [](const auto& x, const auto& y) { return key(x) == key(y); }
+        ),
+        all.end()
+    );
+
+    std::vector<contactCandidate> result;
+    for (const contactCandidate& c : all)
+    {
+        if (!result.empty())
+        {
+            contactCandidate& p = result.back();
+            const contactLoop& el = loops[c.edgeLoop];
+            const int n = int(el.vertices.size());
+            const bool sameVertex =
+                p.vertexLoop == c.vertexLoop && p.vertex == c.vertex
+             && p.edgeLoop == c.edgeLoop;
+            // p's edge ends where c's edge starts (or the loop wraps round)
+            int shared = -1;
+            if (sameVertex && (p.edge + 1)%n == c.edge && p.t == 1 && c.t == 0)
+            {
+                shared = c.edge;
+            }
+            else if
+            (
+                sameVertex && el.closed && (c.edge + 1)%n == p.edge
+             && c.t == 1 && p.t == 0
+            )
+            {
+                shared = p.edge;
+            }
+            if (shared >= 0 && !isReflex(el, shared, angleTolerance))
+            {
+                const contactLoop& vl = loops[c.vertexLoop];
+                if (fit(vl, c.vertex, el, c.edge) > fit(vl, c.vertex, el, p.edge))
+                {
+                    p = c;
+                }
+                continue;
+            }
+        }
+        result.push_back(c);
+    }
+    return result;
+}
+
+} // End anonymous namespace
+
+
+bool contactCandidate::operator<(const contactCandidate& other) const
+{
+    return key(*this) < key(other);
+}
+
+
+contactSearch::contactSearch(double distance, double angleTolerance)
+:
+    distance_(distance),
+    angleTolerance_(angleTolerance)
+{
+    if (!(distance > 0))
+    {
+        throw std::invalid_argument("contactSearch: search distance must be > 0");
+    }
+    if (!(angleTolerance >= 0))
+    {
+        throw std::invalid_argument("contactSearch: angle tolerance must be >= 0");
+    }
+}
+
+
+bool contactSearch::mayTouch(const contactLoop& a, const contactLoop& b)
+{
+    if (a.block != b.block) return true;
+    // Within one block only the two faces of one joint meet
+    return a.type == contactLoop::kind::jointFace
+        && b.type == contactLoop::kind::jointFace
+        && a.source == b.source;
+}
+
+
+std::vector<std::pair<std::size_t, std::size_t>> contactSearch::loopPairs
+(
+    const std::vector<contactLoop>& loops
+) const
+{
+    // Loops of fewer than two vertices have no edge; they get no box
+    std::vector<boxSearch::box> boxes;
+    std::vector<std::size_t> loopOfBox;
+    for (std::size_t i = 0; i < loops.size(); ++i)
+    {
+        if (loops[i].nEdges() == 0) continue;
+        boxSearch::box b;
+        for (const contactVertex& v : loops[i].vertices) b.extend(v.x);
+        b.min().array() -= distance_;
+        b.max().array() += distance_;
+        boxes.push_back(b);
+        loopOfBox.push_back(i);
+    }
+
+    std::vector<std::pair<std::size_t, std::size_t>> result;
+    for (const auto& [i, j] : boxSearch::selfPairs(boxes))
+    {
+        const std::size_t a = loopOfBox[i], b = loopOfBox[j];
+        if (mayTouch(loops[a], loops[b])) result.emplace_back(a, b);
+    }
+    std::sort(result.begin(), result.end());
+    return result;
+}
+
+
+std::vector<contactCandidate> contactSearch::find
+(
+    const std::vector<contactLoop>& loops
+) const
+{
+    std::vector<contactCandidate> all;
+    for (const auto& [a, b] : loopPairs(loops))
+    {
+        pairSearch(loops, distance_, angleTolerance_, int(a), int(b)).run(all);
+    }
+    return tidy(loops, std::move(all), angleTolerance_);
+}
+
+} // End namespace nmm

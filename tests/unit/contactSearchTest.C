@@ -1,0 +1,338 @@
+// Unit tests of the contact search on hand-made loops: squares apart, near
+// and penetrating, the corner combinations of the seed paper's Fig. 5, a
+// grain in a hole, a closing crack, a block never touching itself, and a
+// 10,000-square grid.
+
+#include "nmmSolid/contact/contactSearch/contactSearch.H"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+using nmm::contactCandidate;
+using nmm::contactLoop;
+using nmm::contactSearch;
+
+namespace
+{
+
+contactLoop loop
+(
+    int block,
+    std::vector<Eigen::Vector2d> points,
+    contactLoop::kind type = contactLoop::kind::outer,
+    int source = 0
+)
+{
+    contactLoop l;
+    l.type = type;
+    l.block = block;
+    l.source = source;
+    l.closed = type != contactLoop::kind::jointFace;
+    for (const auto& p : points)
+    {
+        nmm::contactVertex v;
+        v.x = p;
+        l.vertices.push_back(v);
+    }
+    return l;
+}
+
+//- Counter-clockwise axis-aligned rectangle, starting at its lower left
+contactLoop rect(int block, double x0, double y0, double x1, double y1)
+{
+    return loop(block, {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
+}
+
+using V = Eigen::Vector2d;
+
+} // End anonymous namespace
+
+
+TEST(contactSearch, squaresApartHaveNoContact)
+{
+    const double d = 0.1;
+    const std::vector<contactLoop> loops{rect(0, 0, 0, 1, 1), rect(1, 0, 1 + 2*d, 1, 2 + 2*d)};
+    EXPECT_TRUE(contactSearch(d).find(loops).empty());
+    // Boxes enlarged by d each just touch: a candidate pair, but no contact
+    EXPECT_EQ(contactSearch(d).loopPairs(loops).size(), 1u);
+}
+
+
+TEST(contactSearch, squareNearLongerBlockGivesItsTwoCorners)
+{
+    const double d = 0.1, g = 0.05;
+    // Lower square 1 wide, upper block 3 wide centred on it
+    const std::vector<contactLoop> loops{rect(0, 0, 0, 1, 1), rect(1, -1, 1 + g, 2, 2)};
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 2u);
+    // Upper block's bottom edge 0 runs from x = -1 to 2
+    EXPECT_EQ(c[0].vertexLoop, 0); EXPECT_EQ(c[0].vertex, 2);   // (1, 1)
+    EXPECT_EQ(c[1].vertexLoop, 0); EXPECT_EQ(c[1].vertex, 3);   // (0, 1)
+    for (const auto& k : c)
+    {
+        EXPECT_EQ(k.edgeLoop, 1);
+        EXPECT_EQ(k.edge, 0);
+        EXPECT_NEAR(k.gap, g, 1e-12);
+        EXPECT_EQ(k.type, contactCandidate::edgeEdge);
+    }
+    EXPECT_NEAR(c[0].t, 2.0/3, 1e-12);
+    EXPECT_NEAR(c[1].t, 1.0/3, 1e-12);
+}
+
+
+TEST(contactSearch, tiltedCornerPenetratingAnEdge)
+{
+    const double d = 0.1, p = 0.03;
+    // A diamond whose lower corner pokes 0.03 into a wide block's top
+    const std::vector<contactLoop> loops
+    {
+        rect(0, -2, -1, 2, 0),
+        loop(1, {{0.3, -p}, {0.8, 0.5}, {0.3, 1}, {-0.2, 0.5}})
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 1u);
+    EXPECT_EQ(c[0].vertexLoop, 1); EXPECT_EQ(c[0].vertex, 0);
+    EXPECT_EQ(c[0].edgeLoop, 0); EXPECT_EQ(c[0].edge, 2);       // top, x from 2 to -2
+    EXPECT_NEAR(c[0].gap, -p, 1e-12);
+    EXPECT_NEAR(c[0].t, (2 - 0.3)/4, 1e-12);
+    EXPECT_EQ(c[0].type, contactCandidate::vertexEdge);
+}
+
+
+TEST(contactSearch, penetrationBeyondDistanceIsDropped)
+{
+    const double d = 0.1;
+    const std::vector<contactLoop> loops
+    {
+        rect(0, -2, -1, 2, 0),
+        loop(1, {{0.3, -0.2}, {0.8, 0.5}, {0.3, 1}, {-0.2, 0.5}})
+    };
+    EXPECT_TRUE(contactSearch(d).find(loops).empty());
+}
+
+
+// Fig. 5, top left: two acute corners. A's tip points +x, B's tip -x with
+// a steep lower face: A's tip goes against B's lower face (fit 0.22 against
+// 0.14 for B's tip on A's lower face)
+TEST(contactSearch, fig5AcuteAcute)
+{
+    const double d = 0.05, g = 0.02;
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{-2, -0.5}, {0, 0}, {-2, 0.5}}),
+        loop(1, {{g, 0}, {2, -1}, {2, 0.2}})
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 1u);
+    EXPECT_EQ(c[0].vertexLoop, 0); EXPECT_EQ(c[0].vertex, 1);
+    EXPECT_EQ(c[0].edgeLoop, 1); EXPECT_EQ(c[0].edge, 0);
+    EXPECT_EQ(c[0].type, contactCandidate::vertexVertex);
+    EXPECT_NEAR(c[0].t, 0, 1e-12);
+    EXPECT_GT(c[0].gap, 0);
+}
+
+
+// Fig. 5: acute against obtuse: the acute corner is the vertex
+TEST(contactSearch, fig5AcuteObtuse)
+{
+    const double d = 0.05, g = 0.02;
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{-2, -0.9}, {0, 0}, {-2, 0.1}}),
+        loop(1, {{g, 0}, {g + 1, -1.732}, {g + 3, 0}, {g + 1, 1.732}})
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 1u);
+    EXPECT_EQ(c[0].vertexLoop, 0); EXPECT_EQ(c[0].vertex, 1);
+    EXPECT_EQ(c[0].edgeLoop, 1); EXPECT_EQ(c[0].edge, 0);
+    EXPECT_EQ(c[0].type, contactCandidate::vertexVertex);
+}
+
+
+// Fig. 5: acute corners with parallel edges overlapping on [-0.5, 0]: one
+// contact at each end of the overlap
+TEST(contactSearch, fig5AcuteAcuteParallel)
+{
+    const double d = 0.05, g = 0.02;
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{-2, -1}, {0, 0}, {-2, 0}}),
+        loop(1, {{-0.5, g}, {1.5, g}, {1.5, g + 1}})
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 2u);
+    EXPECT_EQ(c[0].vertexLoop, 0); EXPECT_EQ(c[0].vertex, 1);   // A's tip
+    EXPECT_EQ(c[0].edgeLoop, 1); EXPECT_EQ(c[0].edge, 0);
+    EXPECT_NEAR(c[0].t, 0.25, 1e-12);
+    EXPECT_EQ(c[1].vertexLoop, 1); EXPECT_EQ(c[1].vertex, 0);   // B's tip
+    EXPECT_EQ(c[1].edgeLoop, 0); EXPECT_EQ(c[1].edge, 1);
+    EXPECT_NEAR(c[1].t, 0.25, 1e-12);
+    for (const auto& k : c)
+    {
+        EXPECT_EQ(k.type, contactCandidate::edgeEdge);
+        EXPECT_NEAR(k.gap, g, 1e-12);
+    }
+}
+
+
+// Fig. 5, bottom left: obtuse corners (135 degrees) with parallel edges
+TEST(contactSearch, fig5ObtuseObtuseParallel)
+{
+    const double d = 0.05, g = 0.02;
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{-2, -1}, {1, -1}, {0, 0}, {-2, 0}}),
+        loop(1, {{-0.5, g}, {1.5, g}, {1.5, g + 1}, {-1.5, g + 1}})
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 2u);
+    EXPECT_EQ(c[0].vertexLoop, 0); EXPECT_EQ(c[0].vertex, 2);
+    EXPECT_EQ(c[0].edgeLoop, 1); EXPECT_EQ(c[0].edge, 0);
+    EXPECT_EQ(c[1].vertexLoop, 1); EXPECT_EQ(c[1].vertex, 0);
+    EXPECT_EQ(c[1].edgeLoop, 0); EXPECT_EQ(c[1].edge, 2);
+    for (const auto& k : c) EXPECT_EQ(k.type, contactCandidate::edgeEdge);
+}
+
+
+// Fig. 5: two obtuse corners, B's a little above A's: B's corner goes
+// against A's upper face (fit 0.17, the best of the four)
+TEST(contactSearch, fig5ObtuseObtuse)
+{
+    const double d = 0.1, g = 0.02;
+    const V w(g, 0.05);
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{0, 0}, {-1, 1.732}, {-3, 0}, {-1, -1.732}}),
+        loop(1, {w, w + V(1, -1.2), w + V(3, 0), w + V(1, 1.6)})
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 1u);
+    EXPECT_EQ(c[0].vertexLoop, 1); EXPECT_EQ(c[0].vertex, 0);
+    EXPECT_EQ(c[0].edgeLoop, 0); EXPECT_EQ(c[0].edge, 0);
+    EXPECT_EQ(c[0].type, contactCandidate::vertexVertex);
+    EXPECT_NEAR(c[0].gap, 0.866*g + 0.025, 1e-3);
+}
+
+
+// Fig. 5, bottom right: a 120-degree corner entering a notch (reflex corner
+// of 220 degrees): it is held by both faces of the notch; the reflex
+// corner is never a contact vertex
+TEST(contactSearch, fig5ObtuseReflex)
+{
+    const double d = 0.05, g = 0.02;
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{0, 0}, {-1, 1.732}, {-3, 0}, {-1, -1.732}}),
+        loop(1, {{g, 0}, {g - 0.684, -1.88}, {g + 2, -1.88}, {g + 2, 1.88}, {g - 0.684, 1.88}})
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 2u);
+    for (const auto& k : c)
+    {
+        EXPECT_EQ(k.vertexLoop, 0);
+        EXPECT_EQ(k.vertex, 0);
+        EXPECT_EQ(k.edgeLoop, 1);
+        EXPECT_EQ(k.type, contactCandidate::vertexVertex);
+        EXPECT_NEAR(k.gap, 0.94*g, 1e-3);
+    }
+    EXPECT_EQ(c[0].edge, 0);
+    EXPECT_EQ(c[1].edge, 4);
+}
+
+
+TEST(contactSearch, grainInAHole)
+{
+    const double d = 0.1, g = 0.05;
+    const std::vector<contactLoop> loops
+    {
+        rect(0, 0, 0, 10, 10),
+        // Hole: material on the left means clockwise
+        loop(0, {{3, 3}, {3, 7}, {7, 7}, {7, 3}}, contactLoop::kind::hole, 1),
+        rect(1, 4, 3 + g, 6, 5)
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 2u);
+    EXPECT_EQ(c[0].vertexLoop, 2); EXPECT_EQ(c[0].vertex, 0);
+    EXPECT_EQ(c[1].vertexLoop, 2); EXPECT_EQ(c[1].vertex, 1);
+    for (const auto& k : c)
+    {
+        EXPECT_EQ(k.edgeLoop, 1);
+        EXPECT_EQ(k.edge, 3);                   // (7, 3) -> (3, 3)
+        EXPECT_NEAR(k.gap, g, 1e-12);
+    }
+    EXPECT_NEAR(c[0].t, 0.75, 1e-12);
+    EXPECT_NEAR(c[1].t, 0.25, 1e-12);
+}
+
+
+TEST(contactSearch, blockNeverTouchesItself)
+{
+    const double d = 0.1;
+    // A U whose arms are 0.02 apart, and a hole 0.02 from the outer loop
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{0, 0}, {3, 0}, {3, 2}, {1.51, 2}, {1.51, 1}, {1.49, 1}, {1.49, 2}, {0, 2}}),
+        rect(1, 10, 0, 12, 2),
+        loop(1, {{10.02, 0.5}, {10.02, 1.5}, {11, 1.5}, {11, 0.5}}, contactLoop::kind::hole, 1)
+    };
+    EXPECT_TRUE(contactSearch(d).find(loops).empty());
+    EXPECT_TRUE(contactSearch(d).loopPairs(loops).empty());
+}
+
+
+TEST(contactSearch, crackFacesClosing)
+{
+    const double d = 0.1, g = 0.01;
+    using k = contactLoop::kind;
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{0, 0}, {1, 0}, {2, 0}}, k::jointFace, 4),
+        loop(0, {{2, -g}, {1, -g}, {0, -g}}, k::jointFace, 4),
+        // A face of another joint of the same block, just as close: no contact
+        loop(0, {{0, 0.5*g}, {2, 0.5*g}}, k::jointFace, 5)
+    };
+    const contactSearch search(d);
+    const auto pairs = search.loopPairs(loops);
+    ASSERT_EQ(pairs.size(), 1u);
+    EXPECT_EQ(pairs[0], std::make_pair(std::size_t(0), std::size_t(1)));
+    const auto c = search.find(loops);
+    ASSERT_EQ(c.size(), 3u);
+    for (int i = 0; i < 3; ++i)
+    {
+        EXPECT_EQ(c[i].vertexLoop, 0);
+        EXPECT_EQ(c[i].vertex, i);
+        EXPECT_EQ(c[i].edgeLoop, 1);
+        EXPECT_NEAR(c[i].gap, g, 1e-12);
+    }
+    // The middle vertex meets both faces' edges at their common vertex: once
+    EXPECT_EQ(c[0].edge, 1);
+    EXPECT_EQ(c[2].edge, 0);
+}
+
+
+TEST(contactSearch, gridOf10000Squares)
+{
+    const double d = 0.1, g = 0.08;     // diagonal corners 0.113 apart: none
+    const int n = 100;
+    std::vector<contactLoop> loops;
+    for (int i = 0; i < n; ++i)
+    {
+        for (int j = 0; j < n; ++j)
+        {
+            loops.push_back
+            (
+                rect(int(loops.size()), i*(1 + g), j*(1 + g), i*(1 + g) + 1, j*(1 + g) + 1)
+            );
+        }
+    }
+    const auto c = contactSearch(d).find(loops);
+    // Two edge-to-edge contacts per side-by-side pair
+    EXPECT_EQ(c.size(), std::size_t(2*2*n*(n - 1)));
+}
+
+
+TEST(contactSearch, rejectsNonPositiveDistance)
+{
+    EXPECT_THROW(contactSearch(0), std::invalid_argument);
+}
