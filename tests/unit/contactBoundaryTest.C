@@ -2,6 +2,7 @@
 // and cover crossing, oriented with the material on the left, joint faces
 // both ways, and vertices that follow the patches.
 #include "nmmSolid/contact/contactBoundary/contactBoundary.H"
+#include "nmmSolid/contact/contactSearch/contactSearch.H"
 #include "nmmSolid/cover/mathematicalCover/mathematicalCover/mathematicalCover.H"
 #include "nmmSolid/cover/physicalCover/physicalCover.H"
 #include "nmmSolid/geometry/blockGeometry/blockGeometry.H"
@@ -117,4 +118,29 @@ TEST(contactBoundaries, jointFacesRunBothWays)
     const double L = (Eigen::Vector2d(0.3, 0.1)).norm() + (Eigen::Vector2d(0.3, -0.05)).norm();
     EXPECT_NEAR(length(left), L, 1e-14);
     EXPECT_NEAR(length(right), L, 1e-14);
+}
+
+
+TEST(contactBoundaries, touchingBlocksGiveClosedContactsAlongTheirSharedEdge)
+{
+    // Two grains sharing the edge y = 0.5, cut by the cover: every contact
+    // found lies on the shared edge with no gap
+    const boundaryCase c(R"(
+        blocks
+        (
+            lower { material rock; polygon ((0 0) (1 0) (1 0.5) (0 0.5)); }
+            upper { material rock; polygon ((0 0.5) (1 0.5) (1 1) (0 1)); }
+        );
+        cover { type structured; cellSize 0.13; }
+    )");
+    const auto& loops = c.boundaries->loops();
+    const nmm::contactSearch search(0.01);
+    const auto contacts = search.find(loops);
+    ASSERT_FALSE(contacts.empty());
+    for (const auto& k : contacts)
+    {
+        EXPECT_NE(loops[k.vertexLoop].block, loops[k.edgeLoop].block);
+        EXPECT_NEAR(loops[k.vertexLoop].vertices[k.vertex].x.y(), 0.5, 1e-14);
+        EXPECT_NEAR(k.gap, 0, 1e-14);
+    }
 }
