@@ -325,6 +325,18 @@ TEST(dictionary, includeInAValueMustBeBalanced)
 }
 
 
+TEST(dictionary, valueStartingWithABraceIsAnError)
+{
+    // Written back it would read as a dictionary
+    const IOerror err = nmm::test::errorOf([]
+    {
+        dictionary::parse("a ;\nb ${a}{ c };\n", "test");
+    });
+    EXPECT_NE(std::string(err.what()).find("starts with '{'"), std::string::npos) << err.what();
+    EXPECT_EQ(err.keyword(), "b");
+}
+
+
 TEST(dictionary, includeErrors)
 {
     tempDir dir("nmmDictTest");

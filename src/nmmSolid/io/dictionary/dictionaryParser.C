@@ -263,6 +263,14 @@ void dictionaryParser::parseEntry
     }
     lx.putBack(t);
     tokenList value = readValue(lx, d, key);
+    // "b $empty{ c };" would be written as "b { c };", which reads back as
+    // a dictionary: a value may not start with '{'
+    if (!value.empty() && value.front().isPunct('{'))
+    {
+        throw IOerror("the value of '" + key.text + "' starts with '{' (after "
+            "expanding '" + t.str() + "'): write a dictionary as '" + key.text
+            + " { ... }' or put the braces inside ( )", t.where, key.text);
+    }
     addEntry(d, std::make_unique<entry>(key.text, std::move(value), key.where,
         key.isString()), mode);
 }
