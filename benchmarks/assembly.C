@@ -30,9 +30,10 @@ Usage
 
 #include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
 
+#include "benchmarkTools.H"
+
 #include <benchmark/benchmark.h>
 
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -74,14 +75,6 @@ using wallClock = std::chrono::steady_clock;
 double since(wallClock::time_point t0)
 {
     return std::chrono::duration<double>(wallClock::now() - t0).count();
-}
-
-
-double peakRSSMB()
-{
-    struct rusage usage;
-    getrusage(RUSAGE_SELF, &usage);
-    return usage.ru_maxrss/1024.0;
 }
 
 
@@ -189,7 +182,7 @@ void reportSystem
         state.counters["nnzL"] = double(results.nnzL);
         state.SetLabel("ordering " + s->ordering());
     }
-    state.counters["peakRSS_MB"] = peakRSSMB();
+    state.counters["peakRSS_MB"] = nmm::benchmarkTools::peakRSSMB();
 }
 
 
@@ -327,20 +320,6 @@ void solveStepSecond(benchmark::State& state)
 }
 
 
-bool consoleFormat(int argc, char** argv)
-{
-    for (int i = 1; i < argc; ++i)
-    {
-        const char* key = "--benchmark_format=";
-        if (std::strncmp(argv[i], key, std::strlen(key)) == 0)
-        {
-            return std::strcmp(argv[i] + std::strlen(key), "console") == 0;
-        }
-    }
-    return true;
-}
-
-
 void printSummary()
 {
     auto seconds = [](double t)
@@ -363,7 +342,7 @@ void printSummary()
         seconds(parts ? sum : -1).c_str(), seconds(results.firstStep).c_str(),
         targetSeconds,
         total < 0 ? "not run" : total < targetSeconds ? "met" : "MISSED",
-        seconds(results.secondStep).c_str(), peakRSSMB()
+        seconds(results.secondStep).c_str(), nmm::benchmarkTools::peakRSSMB()
     );
 }
 
@@ -382,7 +361,7 @@ BENCHMARK(solveStepSecond)->Name("solveStep/second")
 
 int main(int argc, char** argv)
 {
-    const bool console = consoleFormat(argc, argv);
+    const bool console = nmm::benchmarkTools::consoleFormat(argc, argv);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     benchmark::RunSpecifiedBenchmarks();

@@ -19,9 +19,10 @@ Usage
 
 #include "nmmSolid/solver/linearSolver/linearSolver/linearSolver.H"
 
+#include "benchmarkTools.H"
+
 #include <benchmark/benchmark.h>
 
-#include <sys/resource.h>
 
 #include <array>
 #include <memory>
@@ -170,12 +171,10 @@ std::unique_ptr<nmm::linearSolver> solverOf(const std::string& type)
 
 void reportSolver(benchmark::State& state, const nmm::linearSolver& s)
 {
-    struct rusage usage;
-    getrusage(RUSAGE_SELF, &usage);
     state.counters["unknowns"] = double(theMatrix().rows());
     state.counters["nnzK"] = double(theMatrix().nonZeros());
     state.counters["nnzL"] = double(s.factorNonZeros());
-    state.counters["peakRSS_MB"] = usage.ru_maxrss/1024.0;
+    state.counters["peakRSS_MB"] = nmm::benchmarkTools::peakRSSMB();
     state.SetLabel("ordering " + s.ordering());
 }
 

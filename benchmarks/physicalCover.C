@@ -32,9 +32,10 @@ Usage
 
 #include "../tests/geometry/grainTiling.H"
 
+#include "benchmarkTools.H"
+
 #include <benchmark/benchmark.h>
 
-#include <sys/resource.h>
 
 #include <chrono>
 #include <cmath>
@@ -140,14 +141,6 @@ const nmm::dictionary& coverDict(int packing)
 }
 
 
-double peakRSSMB()
-{
-    struct rusage usage;
-    getrusage(RUSAGE_SELF, &usage);
-    return usage.ru_maxrss/1024.0;
-}
-
-
 //- Wall seconds of the last iteration of each part, for the summary
 struct summary
 {
@@ -185,7 +178,7 @@ void report
     state.counters["patches"] = double(results.patches);
     state.counters["unknowns"] = double(results.unknowns);
     state.counters["extendedPatches"] = double(results.extended);
-    state.counters["peakRSS_MB"] = peakRSSMB();
+    state.counters["peakRSS_MB"] = nmm::benchmarkTools::peakRSSMB();
 }
 
 
@@ -204,7 +197,7 @@ void readGeometryBench(benchmark::State& state, int packing)
     }
     state.counters["grains"] = double(nBlocks);
     state.counters["vertices"] = double(nVertices);
-    state.counters["peakRSS_MB"] = peakRSSMB();
+    state.counters["peakRSS_MB"] = nmm::benchmarkTools::peakRSSMB();
 }
 
 
@@ -224,7 +217,7 @@ void structuredCoverBench(benchmark::State& state, int packing)
     }
     state.counters["triangles"] = double(nTriangles);
     state.counters["nodes"] = double(nNodes);
-    state.counters["peakRSS_MB"] = peakRSSMB();
+    state.counters["peakRSS_MB"] = nmm::benchmarkTools::peakRSSMB();
     state.SetLabel("cellSize " + std::to_string(dict.get<double>("cellSize")));
 }
 
@@ -266,20 +259,6 @@ void totalBench(benchmark::State& state, int packing)
 }
 
 
-bool consoleFormat(int argc, char** argv)
-{
-    for (int i = 1; i < argc; ++i)
-    {
-        const char* key = "--benchmark_format=";
-        if (std::strncmp(argv[i], key, std::strlen(key)) == 0)
-        {
-            return std::strcmp(argv[i] + std::strlen(key), "console") == 0;
-        }
-    }
-    return true;
-}
-
-
 void printSummary()
 {
     auto seconds = [](double t)
@@ -300,7 +279,7 @@ void printSummary()
             seconds(r.cover).c_str(), seconds(r.physical).c_str(),
             seconds(r.total).c_str(), targetSeconds,
             r.total < 0 ? "not run" : r.total < targetSeconds ? "met" : "MISSED",
-            peakRSSMB()
+            nmm::benchmarkTools::peakRSSMB()
         );
     }
 }
@@ -322,7 +301,7 @@ NMM_PACKING_BENCHMARKS(totalBench, "total", 1);
 
 int main(int argc, char** argv)
 {
-    const bool console = consoleFormat(argc, argv);
+    const bool console = nmm::benchmarkTools::consoleFormat(argc, argv);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     benchmark::RunSpecifiedBenchmarks();
