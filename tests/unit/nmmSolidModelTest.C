@@ -49,6 +49,8 @@ struct testCase
         dir.write("constant/mechanicalProperties", std::string(header)
             + "planeStress no; thickness 1;\n"
               "materials { rock { type linearElastic; E 1000; nu 0.3; rho 2000; } }\n");
+        dir.write("constant/contactProperties", std::string(header)
+            + "default { law mohrCoulomb; frictionAngle 30; }\n");
         dir.write("0/D", std::string(header) + "dimensions [0 1 0 0 0 0 0];\n"
             "internalField uniform (0 0 0);\nboundaryField {" + boundaryField + "}\n");
         if (!gravity.empty())

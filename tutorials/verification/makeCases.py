@@ -143,6 +143,17 @@ boundaryField
 """ % patches, cls="volVectorField")
 
 
+def contactProperties(case, frictionAngle, comment=""):
+    write(case, "constant/contactProperties", "constant", "contactProperties",
+          comment + """\
+default
+{
+    law             mohrCoulomb;
+    frictionAngle   %s;
+}
+""" % frictionAngle)
+
+
 def meshDict(case, blocks, patches, cover, joints=None):
     body = "blocks\n(\n%s);\n\n" % blocks
     if joints:
@@ -363,6 +374,7 @@ def sneddon(angleDeg):
     # holds for the linear problem only
     staticSolution(c, smallDisplacement=True)
     mechanicalProperties(c, False, "solid", "1", "0.15", "1")
+    contactProperties(c, 0, "// The pressurised crack opens: its faces never touch\n")
     meshDict(c, """\
     plate { material solid; polygon ((-1 -1) (1 -1) (1 1) (-1 1)); }
 """, """\

@@ -29,6 +29,7 @@ Usage
 #include "nmmSolid/output/solidOutput/solidOutput.H"
 #include "nmmSolid/output/vtk/vtkWriter/vtkWriter.H"
 #include "nmmSolid/solver/solutionControls/solutionControls.H"
+#include "nmmSolid/solver/stepController/stepController.H"
 
 #include <algorithm>
 #include <filesystem>
@@ -78,12 +79,53 @@ nmm::argList makeArgList()
 }
 
 
-//- The step to ask for when the time step is adjustable
-double proposedDeltaT(const nmm::Time& runTime)
+//- The step control of the case (system/nmmSolution's stepControl)
+nmm::stepController makeStepController
+(
+    const nmm::Time& runTime,
+    const nmm::nmmSolidModel& model
+)
 {
-    // Step control (system/nmmSolution) will propose a step from the
-    // contact physics; until then the controlDict's deltaT
-    return std::min(runTime.controlDeltaT(), runTime.maxDeltaT());
+    const nmm::stepControlSettings settings = model.controls()
+        ? model.controls()->stepControl() : nmm::stepControlSettings();
+    return nmm::stepController
+    (
+        settings, runTime.deltaTValue(), runTime.adjustTimeStep()
+    );
+}
+
+
+//- Solve the step of runTime's deltaT, cutting it until it can be
+//  accepted; false if even minDeltaT cannot be resolved
+bool solveStep
+(
+    nmm::Time& runTime,
+    nmm::nmmSolidModel& model,
+    nmm::stepController& steps
+)
+{
+    double dt = runTime.deltaTValue();
+    for (;;)
+    {
+        const nmm::stepReport report = model.solveStep(dt);
+        if (report.converged) return true;
+        const auto shorter = steps.cut(dt);
+        std::cout << "    step cut: " << report.cutReason << "; deltaT "
+            << dt << " -> " << (shorter ? std::to_string(*shorter) : "none") << '\n';
+        if (!shorter) return false;
+        dt = *shorter;
+        runTime.setDeltaT(dt, false);
+    }
+}
+
+
+void printContacts(const nmm::nmmSolidModel& model)
+{
+    const nmm::stepReport& r = model.lastStep();
+    if (!model.contacts()) return;
+    std::cout << "    contacts: open " << r.contacts[0] << ", bonded " << r.contacts[1]
+        << ", sliding " << r.contacts[2] << "; iterations " << r.iterations
+        << ", cuts " << r.cuts << ", max penetration " << r.maxPenetration << '\n';
 }
 
 
@@ -162,27 +204,53 @@ int run(int argc, char* argv[])
 
     std::cout << "\nStarting time loop\n" << std::endl;
 
+    model->setLog(std::cout);
+    nmm::stepController steps = makeStepController(runTime, *model);
+    const auto writeFrame = [&]()
+    {
+        vtk.write(nmm::solidOutput::frame(*model), runTime.timeIndex(), runTime.value());
+        if (model->contacts())
+        {
+            vtk.writeContacts
+            (
+                nmm::solidOutput::contactFrame(*model), runTime.timeIndex(), runTime.value()
+            );
+        }
+    };
+
     while (runTime.run())
     {
-        if (runTime.adjustTimeStep())
-        {
-            runTime.setDeltaT(proposedDeltaT(runTime));
-            std::cout << "deltaT = " << runTime.deltaTValue() << '\n';
-        }
+        const double proposal = steps.next(runTime.maxDeltaT());
+        runTime.setDeltaT(proposal, runTime.adjustTimeStep());
+        std::cout << "deltaT = " << runTime.deltaTValue() << '\n';
 
+        if (!solveStep(runTime, *model, steps))
+        {
+            runTime.writeNow();
+            writeFrame();
+            throw nmm::fatalError
+            (
+                "the step from time " + runTime.timeName() + " cannot be resolved "
+                "even with minDeltaT " + std::to_string(steps.settings().minDeltaT)
+                + " (system/nmmSolution stepControl); the last good time "
+                + runTime.timeName() + " is written"
+            );
+        }
+        const double dt = runTime.deltaTValue();
         ++runTime;
+        model->acceptStep();
+        steps.accepted
+        (
+            model->lastStep().cuts ? dt : std::max(dt, proposal),
+            model->scheme().dynamic() ? model->lastStep().displacementRatio : 0.0
+        );
 
         std::cout << "Time = " << runTime.timeName() << "\n" << std::endl;
-
-        model->solveStep(runTime.deltaTValue());
-        model->acceptStep();
+        printContacts(*model);
         std::cout << "    max |D| = " << largestDisplacement(*model) << '\n';
 
         runTime.write();
-        if (runTime.writeTime())
-        {
-            vtk.write(nmm::solidOutput::frame(*model), runTime.timeIndex(), runTime.value());
-        }
+        if (runTime.writeTime()) writeFrame();
         runTime.printExecutionTime(std::cout);
     }
 

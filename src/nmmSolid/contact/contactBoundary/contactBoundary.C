@@ -165,14 +165,24 @@ void contactBoundaries::move
 {
     for (auto& loop : loops_)
     {
-        for (auto& v : loop.vertices)
-        {
-            const auto& e = pc.elements()[v.element];
-            const auto T = physicalCover::triangleOf(cover, e);
-            v.x = manifoldElement::toCartesian(T, v.lambda);
-            for (int k = 0; k < 3; ++k) v.x += v.lambda[k]*patchD.col(e.patches[k]);
-        }
+        for (auto& v : loop.vertices) v.x = position(cover, pc, v, patchD);
     }
+}
+
+
+Eigen::Vector2d contactBoundaries::position
+(
+    const mathematicalCover& cover,
+    const physicalCover& pc,
+    const contactVertex& v,
+    const Eigen::Matrix2Xd& patchD
+)
+{
+    const auto& e = pc.elements()[v.element];
+    Eigen::Vector2d x =
+        manifoldElement::toCartesian(physicalCover::triangleOf(cover, e), v.lambda);
+    for (int k = 0; k < 3; ++k) x += v.lambda[k]*patchD.col(e.patches[k]);
+    return x;
 }
 
 } // End namespace nmm

@@ -7,7 +7,9 @@
 #include <Eigen/SparseCholesky>
 
 #include <cmath>
+#include <algorithm>
 #include <iomanip>
+#include <sstream>
 #include <ostream>
 
 namespace nmm
@@ -89,6 +91,35 @@ nmmSolidModel::nmmSolidModel(parts p)
         timing_["mass matrix"] += clock.elapsed();
     }
     state_.resize(parts_.elements->nUnknowns(), parts_.elements->nElements());
+    const Eigen::Vector2d side = parts_.geometry->bounds().sizes();
+    halfSize_ = 0.5*side.maxCoeff();
+    if (parts_.contacts) createContacts();
+}
+
+
+void nmmSolidModel::createContacts()
+{
+    const contactSettings cs = parts_.controls ? parts_.controls->contact() : contactSettings();
+    const stepControlSettings sc =
+        parts_.controls ? parts_.controls->stepControl() : stepControlSettings();
+    double largestModulus = 0;
+    for (std::size_t m = 0; m < parts_.properties->size(); ++m)
+    {
+        largestModulus =
+            std::max(largestModulus, parts_.properties->material(m).stiffnessModulus());
+    }
+    contactModel::settings s;
+    s.normalPenalty = cs.normalPenalty.value_or(50*largestModulus);
+    s.shearPenalty = cs.shearPenalty.value_or(s.normalPenalty/2.5);
+    s.searchDistance = cs.searchDistance.value_or(2.5*sc.maxDisplacementRatio*halfSize_);
+    s.touchTolerance = 1e-6*s.searchDistance;
+    penetrationLimit_ = 0.4*s.searchDistance;
+    contacts_ = std::make_unique<contactModel>
+    (
+        *parts_.cover, *parts_.elements, *parts_.geometry, *assembler_,
+        std::move(*parts_.contacts), materialOfBlock_, s,
+        parts_.properties->thickness()
+    );
 }
 
 
@@ -112,7 +143,7 @@ void nmmSolidModel::initialiseAcceleration()
 }
 
 
-void nmmSolidModel::solveStep(double dt)
+stepReport nmmSolidModel::solveStep(double dt)
 {
     if (parts_.scheme.dynamic() && parts_.scheme.accelerationFactor() != 0
      && state_.timeIndex == 0 && state_.A.isZero())
@@ -122,14 +153,42 @@ void nmmSolidModel::solveStep(double dt)
         timing_["mass matrix"] += clock.elapsed();
     }
 
-    cpuTime clock;
+    const cpuTime clock;
     const auto sys = assembler_->assemble(state_, dt, parts_.scheme);
     timing_["assembly"] += clock.elapsed();
 
-    clock = cpuTime();
+    stepReport report;
+    report.deltaT = dt;
+    report.cuts = cuts_;
+    Eigen::VectorXd dd;
+    if (!contacts_)
+    {
+        dd = solveSystem(sys.K, sys.f, dt);
+    }
+    else if (!solveWithContacts(sys, dt, report, dd))
+    {
+        report.converged = false;
+        ++cuts_;
+        trialReady_ = false;
+        return report;
+    }
+    updateTrial(dd, dt);
+    last_ = report;
+    return report;
+}
+
+
+Eigen::VectorXd nmmSolidModel::solveSystem
+(
+    const Eigen::SparseMatrix<double>& K,
+    const Eigen::VectorXd& f,
+    double dt
+)
+{
+    cpuTime clock;
     try
     {
-        parts_.solver->factorise(sys.K);
+        parts_.solver->factorise(K);
     }
     catch (const singularSystem& err)
     {
@@ -145,10 +204,102 @@ void nmmSolidModel::solveStep(double dt)
     timing_["factorisation"] += clock.elapsed();
 
     clock = cpuTime();
-    const Eigen::VectorXd dd = parts_.solver->solve(sys.f);
+    Eigen::VectorXd dd = parts_.solver->solve(f);
     timing_["solution"] += clock.elapsed();
+    if (!dd.allFinite())
+    {
+        throw fatalError
+        (
+            "the solution of the step to time " + std::to_string(state_.time + dt)
+            + " is not finite: the system is too badly conditioned (check the "
+            "contact penalties against the materials' moduli)"
+        );
+    }
+    return dd;
+}
 
-    clock = cpuTime();
+
+bool nmmSolidModel::solveWithContacts
+(
+    const nmmAssembler::system& sys,
+    double dt,
+    stepReport& report,
+    Eigen::VectorXd& dd
+)
+{
+    const long n = long(sys.f.size());
+    cpuTime clock;
+    contacts_->beginStep
+    (
+        assembler_->patchDisplacements(state_.D), state_.contacts, state_.timeIndex == 0
+    );
+    timing_["contact detection"] += clock.elapsed();
+
+    const int maxIterations = parts_.controls
+        ? parts_.controls->contact().maxOpenCloseIterations : contactSettings().maxOpenCloseIterations;
+    bool settled = false;
+    for (int it = 1; it <= maxIterations && !settled; ++it)
+    {
+        clock = cpuTime();
+        const Eigen::SparseMatrix<double> K = sys.K + contacts_->matrix(n);
+        const Eigen::VectorXd f = sys.f + contacts_->forces(n);
+        timing_["contact assembly"] += clock.elapsed();
+
+        dd = solveSystem(K, f, dt);
+
+        clock = cpuTime();
+        const auto counts = contacts_->update(dd);
+        timing_["contact update"] += clock.elapsed();
+        report.iterations = it;
+        report.contacts = counts.states;
+        report.bondsBroken += counts.bondsBroken;
+        logIteration(it, counts);
+        settled = counts.changes == 0;
+    }
+
+    report.maxPenetration = contacts_->maxPenetration();
+    const auto patchDD = assembler_->patchDisplacements(dd);
+    report.displacementRatio = patchDD.cols()
+        ? patchDD.colwise().norm().maxCoeff()/halfSize_ : 0.0;
+    const double maxRatio = parts_.controls
+        ? parts_.controls->stepControl().maxDisplacementRatio
+        : stepControlSettings().maxDisplacementRatio;
+
+    std::ostringstream why;
+    if (!settled)
+    {
+        why << "the open-close iteration did not settle in " << maxIterations
+            << " iterations";
+    }
+    else if (report.maxPenetration > penetrationLimit_)
+    {
+        why << "penetration " << report.maxPenetration << " m exceeds the limit "
+            << penetrationLimit_ << " m";
+    }
+    else if (parts_.scheme.dynamic() && report.displacementRatio > maxRatio)
+    {
+        why << "displacement ratio " << report.displacementRatio
+            << " exceeds maxDisplacementRatio " << maxRatio;
+    }
+    report.cutReason = why.str();
+    return report.cutReason.empty();
+}
+
+
+void nmmSolidModel::logIteration(int it, const contactModel::iterationCounts& c) const
+{
+    if (!log_) return;
+    *log_ << "    open-close " << it << ": open " << c.states[0]
+        << ", bonded " << c.states[1] << ", sliding " << c.states[2]
+        << "; changes " << c.changes;
+    if (c.bondsBroken) *log_ << ", bonds broken " << c.bondsBroken;
+    *log_ << '\n';
+}
+
+
+void nmmSolidModel::updateTrial(const Eigen::VectorXd& dd, double dt)
+{
+    const cpuTime clock;
     trial_ = state_;
     trial_.time = state_.time + dt;
     ++trial_.timeIndex;
@@ -158,6 +309,7 @@ void nmmSolidModel::solveStep(double dt)
     updateStresses(patchD0, dPatch, rotations);
     updateMotion(dd, dt);
     if (parts_.largeDisplacement) correctRotations(patchD0, rotations);
+    if (contacts_) trial_.contacts = contacts_->records();
     trialReady_ = true;
     timing_["update"] += clock.elapsed();
 }
@@ -260,6 +412,8 @@ void nmmSolidModel::acceptStep()
     }
     state_ = std::move(trial_);
     trialReady_ = false;
+    last_.cuts = cuts_;
+    cuts_ = 0;
 }
 
 

@@ -78,6 +78,39 @@ timeScheme schemeOf(const solutionControls& controls)
     return timeScheme::Newmark(controls.beta(), controls.gamma());
 }
 
+//- The contact laws when bodies can touch: two blocks or more, or a joint
+//  (its faces close); a single block builds no contact machinery
+std::unique_ptr<contactProperties> readContacts
+(
+    const caseFolder& runCase,
+    const blockGeometry& geometry,
+    const mechanicalProperties& props,
+    const solutionControls& controls
+)
+{
+    if (geometry.nBlocks() < 2 && geometry.nJoints() == 0) return nullptr;
+    const auto file = runCase.constant()/"contactProperties";
+    if (!std::filesystem::is_regular_file(file))
+    {
+        throw fatalError
+        (
+            "cannot find file \"" + file.string() + "\": the case has "
+            + std::to_string(geometry.nBlocks()) + " blocks and "
+            + std::to_string(geometry.nJoints()) + " joints, so bodies can "
+            "touch and need a contact law (see nmmSolidFoam -help)"
+        );
+    }
+    if (controls.contact().method != "penalty")
+    {
+        throw fatalError
+        (
+            runCase.system().string() + "/nmmSolution: contact method '"
+            + controls.contact().method + "' is not available yet; use penalty"
+        );
+    }
+    return std::make_unique<contactProperties>(contactProperties::read(file, props.names()));
+}
+
 } // End anonymous namespace
 
 
@@ -115,6 +148,8 @@ std::unique_ptr<nmmSolidModel> nmmSolidModel::New
 
     const gravity g = gravity::read(runCase.constant()/"g");
     if (g.active()) p.gravity = g.value();
+
+    p.contacts = readContacts(runCase, *p.geometry, *p.properties, *p.controls);
 
     return std::make_unique<nmmSolidModel>(std::move(p));
 }

@@ -286,6 +286,80 @@ const char* solidOutput::stateFileName()
 }
 
 
+namespace
+{
+
+constexpr std::size_t contactIdColumns = 6;
+constexpr std::size_t contactValueColumns = 10;
+
+void writeContacts(hdf5File& out, const std::vector<contactRecord>& contacts)
+{
+    out.writeAttribute("/", "nContacts", std::int64_t(contacts.size()));
+    if (contacts.empty()) return;
+    hdf5File::array2D<std::int32_t> ids{contacts.size(), contactIdColumns, {}};
+    hdf5File::array2D<double> values{contacts.size(), contactValueColumns, {}};
+    for (const auto& r : contacts)
+    {
+        ids.values.insert(ids.values.end(),
+        {
+            r.vertexLoop, r.vertex, r.edgeLoop, r.edge,
+            contactStateNumber(r.state), std::int32_t(r.bondIntact)
+        });
+        values.values.insert(values.values.end(),
+        {
+            r.shearForce, r.slip, r.normalForce, r.gap, r.t, r.length,
+            r.point.x(), r.point.y(), r.normal.x(), r.normal.y()
+        });
+    }
+    out.write("contacts/ids", ids);
+    out.write("contacts/values", values);
+}
+
+
+std::vector<contactRecord> readContacts
+(
+    const hdf5File& in,
+    const std::filesystem::path& file,
+    const nmmSolidModel& model
+)
+{
+    std::vector<contactRecord> result;
+    if (!in.exists("contacts/ids")) return result;
+    const auto ids = in.read2D<std::int32_t>("contacts/ids", contactIdColumns);
+    const auto values = in.read2D<double>("contacts/values", contactValueColumns);
+    const std::size_t nLoops =
+        model.contacts() ? model.contacts()->boundaries().loops().size() : 0;
+    for (std::size_t i = 0; i < ids.rows; ++i)
+    {
+        contactRecord r;
+        r.vertexLoop = ids(i, 0);
+        r.vertex = ids(i, 1);
+        r.edgeLoop = ids(i, 2);
+        r.edge = ids(i, 3);
+        if (ids.rows != values.rows || std::size_t(std::max(r.vertexLoop, r.edgeLoop)) >= nLoops
+         || ids(i, 4) < 0 || ids(i, 4) > 2)
+        {
+            throw fatalError(file.string() + ": contact " + std::to_string(i)
+                + " does not belong to this model's contact boundaries");
+        }
+        r.state = static_cast<contactState>(ids(i, 4));
+        r.bondIntact = ids(i, 5) != 0;
+        r.shearForce = values(i, 0);
+        r.slip = values(i, 1);
+        r.normalForce = values(i, 2);
+        r.gap = values(i, 3);
+        r.t = values(i, 4);
+        r.length = values(i, 5);
+        r.point = {values(i, 6), values(i, 7)};
+        r.normal = {values(i, 8), values(i, 9)};
+        result.push_back(r);
+    }
+    return result;
+}
+
+} // End anonymous namespace
+
+
 void solidOutput::writeState
 (
     const std::filesystem::path& timeDir,
@@ -303,6 +377,7 @@ void solidOutput::writeState
     hdf5File::array2D<double> sigma{s.sigma.size(), 4, {}};
     for (const auto& v : s.sigma) sigma.values.insert(sigma.values.end(), v.data(), v.data() + 4);
     out.write("sigma", sigma);
+    writeContacts(out, s.contacts);
     out.commit();
 }
 
@@ -347,7 +422,46 @@ solidState solidOutput::readState
     {
         s.sigma.emplace_back(sigma(e, 0), sigma(e, 1), sigma(e, 2), sigma(e, 3));
     }
+    s.contacts = readContacts(in, file, model);
     return s;
+}
+
+
+vtkPointSet solidOutput::contactFrame(const nmmSolidModel& model)
+{
+    vtkPointSet set;
+    const contactModel* cm = model.contacts();
+    if (!cm) return set;
+    const auto patchD = model.patchDisplacements();
+    const auto& loops = cm->boundaries().loops();
+    std::vector<std::int32_t> state, bond;
+    std::vector<double> fn, fs, penetration, slip;
+    std::vector<Eigen::Vector2d> normal, traction;
+    for (const contactRecord& r : model.state().contacts)
+    {
+        set.addPoint(contactBoundaries::position
+        (
+            model.cover(), model.elements(), loops[r.vertexLoop].vertices[r.vertex], patchD
+        ));
+        state.push_back(contactStateNumber(r.state));
+        bond.push_back(r.bondIntact);
+        fn.push_back(r.normalForce);
+        fs.push_back(r.shearForce);
+        penetration.push_back(-r.gap);
+        slip.push_back(r.slip);
+        normal.push_back(r.normal);
+        const Eigen::Vector2d s(-r.normal.y(), r.normal.x());
+        traction.push_back(r.normalForce*r.normal + r.shearForce*s);
+    }
+    set.addPointData(vtkDataArray::int32("contactState", std::move(state)));
+    set.addPointData(vtkDataArray::int32("bondIntact", std::move(bond)));
+    set.addPointData(vtkDataArray::scalar("normalForce", std::move(fn)));
+    set.addPointData(vtkDataArray::scalar("shearForce", std::move(fs)));
+    set.addPointData(vtkDataArray::scalar("penetration", std::move(penetration)));
+    set.addPointData(vtkDataArray::scalar("slip", std::move(slip)));
+    set.addPointData(vtkDataArray::vector("normal", normal));
+    set.addPointData(vtkDataArray::vector("force", traction));
+    return set;
 }
 
 } // End namespace nmm

@@ -1,0 +1,316 @@
+#include "nmmSolid/contact/contactModel/contactModel.H"
+
+#include "nmmSolid/cover/physicalCover/physicalCover.H"
+#include "nmmSolid/solver/assembler/nmmAssembler.H"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace nmm
+{
+
+namespace
+{
+
+using vec = Eigen::Vector2d;
+
+//- A sliding contact has settled when its friction load changes by less
+//  than this fraction between two solves (friction lags the normal force
+//  by one solve)
+constexpr double frictionTolerance = 1e-2;
+
+vec tangentOf(const contactLoop& l, int e)
+{
+    return (l.edgeEnd(e).x - l.edgeStart(e).x).normalized();
+}
+
+
+//- Sum of coefficient x dd over the terms
+double along(const std::vector<std::pair<int, double>>& t, const Eigen::VectorXd& dd)
+{
+    double s = 0;
+    for (const auto& [dof, c] : t) s += c*dd[dof];
+    return s;
+}
+
+
+//- Outer product k a b^T of two term lists into triplets
+void addOuter
+(
+    const std::vector<std::pair<int, double>>& a,
+    double k,
+    std::vector<Eigen::Triplet<double>>& K
+)
+{
+    for (const auto& [i, ci] : a)
+    {
+        for (const auto& [j, cj] : a) K.emplace_back(i, j, k*ci*cj);
+    }
+}
+
+} // End anonymous namespace
+
+
+contactModel::contactModel
+(
+    const mathematicalCover& cover,
+    const physicalCover& pc,
+    const blockGeometry& geometry,
+    const nmmAssembler& assembler,
+    contactProperties properties,
+    std::vector<std::size_t> materialOfBlock,
+    const settings& s,
+    double thickness
+)
+:
+    cover_(cover),
+    pc_(pc),
+    assembler_(assembler),
+    properties_(std::move(properties)),
+    materialOfBlock_(std::move(materialOfBlock)),
+    settings_(s),
+    thickness_(thickness),
+    boundaries_(cover, pc, geometry),
+    search_(s.searchDistance)
+{}
+
+
+contactModel::terms contactModel::relativeTerms
+(
+    const contactCandidate& c,
+    const Eigen::Vector2d& dir
+) const
+{
+    const auto& loops = boundaries_.loops();
+    const contactVertex& v = loops[c.vertexLoop].vertices[c.vertex];
+    const contactVertex& a = loops[c.edgeLoop].edgeStart(c.edge);
+    const manifoldElement::baryPoint edgePoint = (1 - c.t)*a.lambda + c.t*a.edgeEndLambda;
+
+    // u(vertex) - u(edge point), each through its element's weights
+    std::map<label, double> sum;
+    const auto add = [&](std::int32_t e, const manifoldElement::baryPoint& w, double sign)
+    {
+        for (const auto& t : assembler_.dofTerms(e))
+        {
+            sum[t.dof] += sign*w[t.local/2]*dir[t.local%2]*t.coefficient;
+        }
+    };
+    add(v.element, v.lambda, 1);
+    add(a.element, edgePoint, -1);
+    return terms(sum.begin(), sum.end());
+}
+
+
+const contactLaw& contactModel::lawOf(const contactCandidate& c) const
+{
+    const auto& loops = boundaries_.loops();
+    return properties_.law
+    (
+        materialOfBlock_[loops[c.vertexLoop].block],
+        materialOfBlock_[loops[c.edgeLoop].block]
+    );
+}
+
+
+void contactModel::beginStep
+(
+    const Eigen::Matrix2Xd& patchD,
+    const std::vector<contactRecord>& history,
+    bool start
+)
+{
+    boundaries_.move(cover_, pc_, patchD);
+    const auto& loops = boundaries_.loops();
+    active_.clear();
+    for (const contactCandidate& c : search_.find(loops))
+    {
+        active a;
+        a.record.vertexLoop = c.vertexLoop;
+        a.record.vertex = c.vertex;
+        a.record.edgeLoop = c.edgeLoop;
+        a.record.edge = c.edge;
+        a.record.t = c.t;
+        a.record.length = c.length;
+        a.record.gap = c.gap;
+        a.gap0 = c.gap;
+        a.law = &lawOf(c);
+        const contactLoop& el = loops[c.edgeLoop];
+        const vec s = tangentOf(el, c.edge);
+        a.n = vec(s.y(), -s.x());
+        a.record.normal = a.n;
+        a.record.point = loops[c.vertexLoop].vertices[c.vertex].x;
+        a.g = relativeTerms(c, a.n);
+        a.h = relativeTerms(c, s);
+        active_.push_back(std::move(a));
+    }
+    carryHistory(history, start);
+}
+
+
+void contactModel::carryHistory(const std::vector<contactRecord>& history, bool start)
+{
+    // By (vertex loop, vertex, edge loop): the edges a vertex touched
+    std::multimap<std::tuple<int, int, int>, const contactRecord*> byVertex;
+    for (const auto& r : history)
+    {
+        byVertex.emplace(std::make_tuple(r.vertexLoop, r.vertex, r.edgeLoop), &r);
+    }
+    const auto& loops = boundaries_.loops();
+
+    for (active& a : active_)
+    {
+        contactRecord& r = a.record;
+        const contactRecord* old = nullptr;
+        const auto range = byVertex.equal_range({r.vertexLoop, r.vertex, r.edgeLoop});
+        const int n = int(loops[r.edgeLoop].nEdges());
+        for (auto it = range.first; it != range.second; ++it)
+        {
+            const int e = it->second->edge;
+            const bool next = (e + 1)%n == r.edge || (r.edge + 1)%n == e;
+            if (e == r.edge || (next && !old)) old = it->second;
+        }
+
+        if (old)
+        {
+            r.state = old->state;
+            r.bondIntact = old->bondIntact;
+            r.shearForce = old->shearForce;
+            r.slip = old->slip;
+            r.normalForce = old->normalForce;
+        }
+        else
+        {
+            const bool touching = std::abs(a.gap0) <= settings_.touchTolerance;
+            const bool cemented = start && touching
+                && a.law->initialState() == contactState::bonded;
+            r.state = touching || a.gap0 < 0 ? contactState::bonded : contactState::open;
+            r.bondIntact = cemented && a.law->hasBondStrength();
+        }
+        a.shearForce0 = isClosed(r.state) ? r.shearForce : 0;
+        a.friction = r.state == contactState::sliding ? r.shearForce : 0;
+    }
+}
+
+
+contactModel::sparseMatrix contactModel::matrix(long nUnknowns) const
+{
+    std::vector<Eigen::Triplet<double>> K;
+    for (const active& a : active_)
+    {
+        const contactState s = a.record.state;
+        addOuter(a.g, isClosed(s) ? kN() : 0.0, K);
+        addOuter(a.h, s == contactState::bonded ? kS() : 0.0, K);
+    }
+    sparseMatrix M(nUnknowns, nUnknowns);
+    M.setFromTriplets(K.begin(), K.end());
+    return M;
+}
+
+
+Eigen::VectorXd contactModel::forces(long nUnknowns) const
+{
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(nUnknowns);
+    for (const active& a : active_)
+    {
+        const contactState s = a.record.state;
+        double normal = 0, shear = 0;
+        if (isClosed(s)) normal = -kN()*a.gap0;
+        if (s == contactState::bonded) shear = a.shearForce0;
+        if (s == contactState::sliding) shear = a.friction;
+        for (const auto& [dof, c] : a.g) f[dof] += normal*c;
+        for (const auto& [dof, c] : a.h) f[dof] += shear*c;
+    }
+    return f;
+}
+
+
+contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
+{
+    iterationCounts counts;
+    for (active& a : active_)
+    {
+        contactRecord& r = a.record;
+        a.dn = along(a.g, dd);
+        a.ds = along(a.h, dd);
+        r.gap = a.gap0 + a.dn;
+
+        contactQuery q;
+        q.state = r.state;
+        q.bondIntact = r.bondIntact;
+        q.gap = r.gap;
+        // An open contact gets the trial forces of closing over the whole
+        // step, so that one that closes while slipping starts sliding
+        q.Fn = -kN()*r.gap;
+        q.Fs = a.shearForce0 - kS()*a.ds;
+        q.length = r.length*thickness_;
+        q.shearDisplacement = r.state == contactState::bonded ? 0 : a.ds;
+
+        const contactDecision d = a.law->decide(q);
+        if (d.state != r.state) ++counts.changes;
+        if (d.bondBroken) ++counts.bondsBroken;
+        r.normalForce = isClosed(r.state) ? q.Fn : 0;
+        r.shearForce = r.state == contactState::sliding ? a.friction
+                     : r.state == contactState::bonded ? q.Fs : 0;
+        // Friction needs the normal force of a closed solve: the trial
+        // force of an open contact can be any multiple of the real one
+        const double friction = r.state == contactState::open ? 0.0 : d.frictionForce;
+        if (d.state == contactState::sliding && d.state == r.state
+         && std::abs(friction - a.friction) > frictionTolerance*std::abs(friction))
+        {
+            ++counts.changes;
+        }
+        r.state = d.state;
+        r.bondIntact = d.bondIntact;
+        a.friction = friction;
+        ++counts.states[contactStateNumber(r.state)];
+    }
+    return counts;
+}
+
+
+double contactModel::maxPenetration() const
+{
+    double p = 0;
+    for (const active& a : active_)
+    {
+        if (isClosed(a.record.state)) p = std::max(p, -a.record.gap);
+    }
+    return p;
+}
+
+
+std::vector<contactRecord> contactModel::records() const
+{
+    // After a settled iteration every state is the one its solve used, so
+    // the forces update() recorded belong to it
+    std::vector<contactRecord> result;
+    result.reserve(active_.size());
+    for (const active& a : active_)
+    {
+        contactRecord r = a.record;
+        if (r.state == contactState::sliding) r.slip += a.ds;
+        if (!isClosed(r.state))
+        {
+            r.normalForce = 0;
+            r.shearForce = 0;
+        }
+        result.push_back(r);
+    }
+    return result;
+}
+
+
+double contactModel::energy(const std::vector<contactRecord>& records) const
+{
+    double e = 0;
+    for (const auto& r : records)
+    {
+        if (!isClosed(r.state)) continue;
+        e += 0.5*r.normalForce*r.normalForce/kN();
+        if (r.state == contactState::bonded) e += 0.5*r.shearForce*r.shearForce/kS();
+    }
+    return e;
+}
+
+} // End namespace nmm
