@@ -46,6 +46,26 @@ contactLoop rect(int block, double x0, double y0, double x1, double y1)
 
 using V = Eigen::Vector2d;
 
+//- Counter-clockwise unit square at o, every side cut in n equal pieces,
+//  the cut points computed from the side's first corner (as the benchmark
+//  does): facing sides of neighbours agree only up to rounding
+contactLoop splitSquare(int block, const V& o, int n)
+{
+    const V corner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    std::vector<V> points;
+    for (int k = 0; k < 4; ++k)
+    {
+        for (int c = 0; c < n; ++c)
+        {
+            points.push_back
+            (
+                o + corner[k] + (corner[(k + 1)%4] - corner[k])*double(c)/n
+            );
+        }
+    }
+    return loop(block, points);
+}
+
 } // End anonymous namespace
 
 
@@ -329,6 +349,27 @@ TEST(contactSearch, gridOf10000Squares)
     const auto c = contactSearch(d).find(loops);
     // Two edge-to-edge contacts per side-by-side pair
     EXPECT_EQ(c.size(), std::size_t(2*2*n*(n - 1)));
+}
+
+
+// Squares with every side cut in 4, 0.08 apart, on rows 57 to 60 of the
+// benchmark's grid: there the cut points of facing sides differ in their
+// last bits, and a vertex at the common vertex of two cut pieces must still
+// give one contact. Five contacts per side-by-side pair (the cut points).
+TEST(contactSearch, splitSquaresGiveOneContactPerCutPoint)
+{
+    const double d = 0.1, g = 0.08;
+    const int n = 4, row0 = 57;
+    std::vector<contactLoop> loops;
+    for (int i = 0; i < n; ++i)
+    {
+        for (int j = row0; j < row0 + n; ++j)
+        {
+            loops.push_back(splitSquare(int(loops.size()), V(i, j)*(1 + g), 4));
+        }
+    }
+    const auto c = contactSearch(d).find(loops);
+    EXPECT_EQ(c.size(), std::size_t(5*2*n*(n - 1)));
 }
 
 

@@ -309,6 +309,15 @@ public:
 };
 
 
+//- Projection parameters this close to an end of an edge are at its end
+//  vertex: the same relative tolerance as for coinciding overlap ends
+constexpr double endTolerance = 1e-9;
+
+bool atStart(double t) { return t <= endTolerance; }
+
+bool atEnd(double t) { return t >= 1 - endTolerance; }
+
+
 //- Sort, drop repeated (vertex, edge) records (an edge-to-edge record wins),
 //  and keep one record where a vertex lies at the common vertex of two
 //  adjacent edges it was matched with
@@ -349,16 +358,22 @@ std::vector<contactCandidate> tidy
             const bool sameVertex =
                 p.vertexLoop == c.vertexLoop && p.vertex == c.vertex
              && p.edgeLoop == c.edgeLoop;
-            // p's edge ends where c's edge starts (or the loop wraps round)
+            // p's edge ends where c's edge starts (or the loop wraps round).
+            // The vertex sits at their common vertex up to rounding: cut
+            // points computed from different corners differ in the last bits
             int shared = -1;
-            if (sameVertex && (p.edge + 1)%n == c.edge && p.t == 1 && c.t == 0)
+            if
+            (
+                sameVertex && (p.edge + 1)%n == c.edge
+             && atEnd(p.t) && atStart(c.t)
+            )
             {
                 shared = c.edge;
             }
             else if
             (
                 sameVertex && el.closed && (c.edge + 1)%n == p.edge
-             && c.t == 1 && p.t == 0
+             && atEnd(c.t) && atStart(p.t)
             )
             {
                 shared = p.edge;
