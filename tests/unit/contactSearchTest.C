@@ -7,6 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
 #include <vector>
 
 using nmm::contactCandidate;
@@ -370,6 +374,106 @@ TEST(contactSearch, splitSquaresGiveOneContactPerCutPoint)
     }
     const auto c = contactSearch(d).find(loops);
     EXPECT_EQ(c.size(), std::size_t(5*2*n*(n - 1)));
+
+    // The contacts of each pair of facing sides stand for the whole side
+    std::map<std::pair<int, int>, double> length;
+    for (const auto& k : c)
+    {
+        EXPECT_EQ(k.type, contactCandidate::edgeEdge);
+        length[std::minmax(k.vertexLoop, k.edgeLoop)] += k.length;
+    }
+    EXPECT_EQ(length.size(), std::size_t(2*n*(n - 1)));
+    for (const auto& [pair, l] : length) EXPECT_NEAR(l, 1, 1e-12);
+}
+
+
+// Two unit squares sharing a side, cut in 3 pieces on the left square's
+// side and in 5 on the right one's: eight edge-to-edge contacts, one at each
+// cut point and corner, each standing for half the distance to its
+// neighbours on either side, together for the whole side
+TEST(contactSearch, sharedSideCutDifferentlyOnEachFace)
+{
+    const double d = 0.1;
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{0, 0}, {1, 0}, {1, 1.0/3}, {1, 2.0/3}, {1, 1}, {0, 1}}),
+        loop(1, {{1, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 0.8}, {1, 0.6}, {1, 0.4}, {1, 0.2}})
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 8u);
+
+    std::vector<std::pair<double, double>> yAndLength;
+    double sum = 0;
+    for (const auto& k : c)
+    {
+        EXPECT_EQ(k.type, contactCandidate::edgeEdge);
+        EXPECT_NEAR(k.gap, 0, 1e-12);
+        yAndLength.emplace_back(loops[k.vertexLoop].vertices[k.vertex].x.y(), k.length);
+        sum += k.length;
+    }
+    EXPECT_NEAR(sum, 1, 1e-12);
+
+    std::sort(yAndLength.begin(), yAndLength.end());
+    const std::vector<double> y{0, 0.2, 1.0/3, 0.4, 0.6, 2.0/3, 0.8, 1};
+    for (std::size_t i = 0; i < y.size(); ++i)
+    {
+        const double below = i == 0 ? 0 : y[i] - y[i - 1];
+        const double above = i + 1 == y.size() ? 0 : y[i + 1] - y[i];
+        EXPECT_NEAR(yAndLength[i].first, y[i], 1e-12);
+        EXPECT_NEAR(yAndLength[i].second, 0.5*(below + above), 1e-12);
+    }
+}
+
+
+// A corner against a face stands for half of the corner's own two edges
+TEST(contactSearch, cornerOnAFaceHasHalfItsEdges)
+{
+    const double d = 0.1, p = 0.03;
+    const std::vector<contactLoop> loops
+    {
+        rect(0, -2, -1, 2, 0),
+        loop(1, {{0.3, -p}, {0.8, 0.5}, {0.3, 1}, {-0.2, 0.5}})
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 1u);
+    EXPECT_EQ(c[0].type, contactCandidate::vertexEdge);
+    // Both edges at the corner are sqrt(0.5^2 + 0.53^2) long
+    EXPECT_NEAR(c[0].length, std::hypot(0.5, 0.5 + p), 1e-12);
+}
+
+
+// Vertex-to-vertex: the same rule, for the corner chosen as the vertex
+TEST(contactSearch, cornerOnCornerHasHalfItsEdges)
+{
+    const double d = 0.05, g = 0.02;
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{-2, -0.5}, {0, 0}, {-2, 0.5}}),
+        loop(1, {{g, 0}, {2, -1}, {2, 0.2}})
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 1u);
+    EXPECT_EQ(c[0].type, contactCandidate::vertexVertex);
+    EXPECT_NEAR(c[0].length, std::hypot(2, 0.5), 1e-12);
+}
+
+
+// Closing crack faces both cut at x = 1: the middle contact ends two
+// overlaps, the ends of the open faces one each
+TEST(contactSearch, crackFacesShareTheirLength)
+{
+    const double d = 0.1, g = 0.01;
+    using k = contactLoop::kind;
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{0, 0}, {1, 0}, {2, 0}}, k::jointFace, 4),
+        loop(0, {{2, -g}, {1, -g}, {0, -g}}, k::jointFace, 4)
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 3u);
+    EXPECT_NEAR(c[0].length, 0.5, 1e-12);
+    EXPECT_NEAR(c[1].length, 1, 1e-12);
+    EXPECT_NEAR(c[2].length, 0.5, 1e-12);
 }
 
 

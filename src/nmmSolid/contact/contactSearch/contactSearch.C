@@ -76,6 +76,20 @@ bool isReflex(const contactLoop& l, int i, double angleTolerance)
 }
 
 
+//- Tributary length of a vertex contact: half of each of the vertex's own
+//  edges (one at the ends of an open polyline)
+double vertexLength(const contactLoop& l, int i)
+{
+    const vec& x = l.vertices[i].x;
+    double result = 0;
+    for (const int j : {prevVertex(l, i), nextVertex(l, i)})
+    {
+        if (j >= 0) result += 0.5*(l.vertices[j].x - x).norm();
+    }
+    return result;
+}
+
+
 //- How well the vertex's material wedge lies on the outer side of the
 //  candidate edge's line: min over its edge directions of u.n
 double fit(const contactLoop& vl, int v, const contactLoop& el, int e)
@@ -192,13 +206,18 @@ class pairSearch
         // Ends that coincide up to rounding are one point: the lower loop's
         // vertex is taken there, the same for every pair of cut edges
         const double eps = 1e-9*std::max(la, lb);
+        // Each end stands for half of the overlap
+        const double half = 0.5*(hi - lo);
         // Low end: a's start if it lies inside b, else b's end
-        addEnd(sb1 <= eps, ea, 0, eb, 1);
+        addEnd(sb1 <= eps, ea, 0, eb, 1, half);
         // High end: a's end if it lies inside b, else b's start
-        addEnd(sb0 >= la - eps, ea, 1, eb, 0);
+        addEnd(sb0 >= la - eps, ea, 1, eb, 0, half);
     }
 
-    void addEnd(bool aInside, int ea, int aEnd, int eb, int bEnd)
+    void addEnd
+    (
+        bool aInside, int ea, int aEnd, int eb, int bEnd, double length
+    )
     {
         contactCandidate c = aInside
           ? make(la_, edgeVertex(la_, ea, aEnd), lb_, eb)
@@ -206,6 +225,7 @@ class pairSearch
         if (admissible(c))
         {
             c.type = contactCandidate::edgeEdge;
+            c.length = length;
             edgeEdge_.push_back(c);
             edgeEdgeVertices_.insert({c.vertexLoop, c.vertex});
         }
@@ -273,6 +293,7 @@ public:
             {
                 c.type = nearCorner
                     ? contactCandidate::vertexVertex : contactCandidate::vertexEdge;
+                c.length = vertexLength(loops_[c.vertexLoop], c.vertex);
                 out.push_back(c);
             }
         }
@@ -301,6 +322,7 @@ public:
             }
             contactCandidate c = *best;
             c.type = contactCandidate::vertexVertex;
+            c.length = vertexLength(loops_[c.vertexLoop], c.vertex);
             out.push_back(c);
         }
 
@@ -318,9 +340,50 @@ bool atStart(double t) { return t <= endTolerance; }
 bool atEnd(double t) { return t >= 1 - endTolerance; }
 
 
-//- Sort, drop repeated (vertex, edge) records (an edge-to-edge record wins),
-//  and keep one record where a vertex lies at the common vertex of two
-//  adjacent edges it was matched with
+//- The edge of loop el at whose start vertex the vertex of p and c lies,
+//  p and c being one vertex against two adjacent edges of el (p first in
+//  key order); -1 when they are not
+int sharedVertex
+(
+    const contactLoop& el,
+    const contactCandidate& p,
+    const contactCandidate& c
+)
+{
+    const bool sameVertex =
+        p.vertexLoop == c.vertexLoop && p.vertex == c.vertex
+     && p.edgeLoop == c.edgeLoop;
+    if (!sameVertex) return -1;
+
+    // p's edge ends where c's edge starts (or the loop wraps round). The
+    // vertex sits at their common vertex up to rounding: cut points computed
+    // from different corners differ in the last bits
+    const int n = int(el.vertices.size());
+    if ((p.edge + 1)%n == c.edge && atEnd(p.t) && atStart(c.t)) return c.edge;
+    if (el.closed && (c.edge + 1)%n == p.edge && atEnd(c.t) && atStart(p.t))
+    {
+        return p.edge;
+    }
+    return -1;
+}
+
+
+//- Length of two records merged into one: the edge-to-edge shares add up
+//  (the contact now ends the overlaps of both), otherwise a vertex length
+//  (the same for both, since the vertex is the same)
+double mergedLength(const contactCandidate& p, const contactCandidate& c)
+{
+    const bool pEdge = p.type == contactCandidate::edgeEdge;
+    const bool cEdge = c.type == contactCandidate::edgeEdge;
+    if (pEdge && cEdge) return p.length + c.length;
+    return cEdge ? c.length : p.length;
+}
+
+
+//- Sort, merge repeated (vertex, edge) records (an edge-to-edge record
+//  wins), and keep one record where a vertex lies at the common vertex of
+//  two adjacent edges it was matched with; merged records keep their
+//  edge-to-edge lengths
 std::vector<contactCandidate> tidy
 (
     const std::vector<contactLoop>& loops,
@@ -328,6 +391,7 @@ std::vector<contactCandidate> tidy
     double angleTolerance
 )
 {
+    // Edge-to-edge records first within each key
     std::sort
     (
         all.begin(), all.end(),
@@ -337,56 +401,34 @@ std::vector<contactCandidate> tidy
                  < std::make_tuple(key(y), -int(y.type));
         }
     );
-    all.erase
-    (
-        std::unique
-        (
-            all.begin(), all.end(),
-            [](const auto& x, const auto& y) { return key(x) == key(y); }
-        ),
-        all.end()
-    );
 
     std::vector<contactCandidate> result;
+    result.reserve(all.size());
     for (const contactCandidate& c : all)
     {
-        if (!result.empty())
+        if (result.empty())
         {
-            contactCandidate& p = result.back();
-            const contactLoop& el = loops[c.edgeLoop];
-            const int n = int(el.vertices.size());
-            const bool sameVertex =
-                p.vertexLoop == c.vertexLoop && p.vertex == c.vertex
-             && p.edgeLoop == c.edgeLoop;
-            // p's edge ends where c's edge starts (or the loop wraps round).
-            // The vertex sits at their common vertex up to rounding: cut
-            // points computed from different corners differ in the last bits
-            int shared = -1;
-            if
-            (
-                sameVertex && (p.edge + 1)%n == c.edge
-             && atEnd(p.t) && atStart(c.t)
-            )
+            result.push_back(c);
+            continue;
+        }
+        contactCandidate& p = result.back();
+        if (key(p) == key(c))
+        {
+            p.length = mergedLength(p, c);
+            continue;
+        }
+        const contactLoop& el = loops[c.edgeLoop];
+        const int shared = sharedVertex(el, p, c);
+        if (shared >= 0 && !isReflex(el, shared, angleTolerance))
+        {
+            const double length = mergedLength(p, c);
+            const contactLoop& vl = loops[c.vertexLoop];
+            if (fit(vl, c.vertex, el, c.edge) > fit(vl, c.vertex, el, p.edge))
             {
-                shared = c.edge;
+                p = c;
             }
-            else if
-            (
-                sameVertex && el.closed && (c.edge + 1)%n == p.edge
-             && atEnd(c.t) && atStart(p.t)
-            )
-            {
-                shared = p.edge;
-            }
-            if (shared >= 0 && !isReflex(el, shared, angleTolerance))
-            {
-                const contactLoop& vl = loops[c.vertexLoop];
-                if (fit(vl, c.vertex, el, c.edge) > fit(vl, c.vertex, el, p.edge))
-                {
-                    p = c;
-                }
-                continue;
-            }
+            p.length = length;
+            continue;
         }
         result.push_back(c);
     }
