@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
-#include <set>
 #include <stdexcept>
 #include <tuple>
 
@@ -45,23 +43,6 @@ vec outwardNormal(const vec& a, const vec& b)
 }
 
 
-//- Unit directions from vertex i along its own edges (one at the ends of
-//  an open polyline)
-std::vector<vec> edgeDirections(const contactLoop& l, int i)
-{
-    std::vector<vec> result;
-    const vec& x = l.vertices[i].x;
-    for (const int j : {prevVertex(l, i), nextVertex(l, i)})
-    {
-        if (j >= 0 && (l.vertices[j].x - x).norm() > 0)
-        {
-            result.push_back((l.vertices[j].x - x).normalized());
-        }
-    }
-    return result;
-}
-
-
 //- The boundary turns right at vertex i by more than the tolerance: the
 //  material surrounds it, so it cannot be the vertex of a contact
 bool isReflex(const contactLoop& l, int i, double angleTolerance)
@@ -74,6 +55,53 @@ bool isReflex(const contactLoop& l, int i, double angleTolerance)
     const double turn = std::atan2(a.x()*b.y() - a.y()*b.x(), a.dot(b));
     return turn < -angleTolerance;
 }
+
+
+//- isReflex of every vertex of the loops, worked out when first asked: a
+//  vertex is looked at by every candidate of every pair its loop is in
+class reflexFlags
+{
+    const std::vector<contactLoop>& loops_;
+    const double angleTolerance_;
+    std::vector<std::size_t> start_;
+    std::vector<signed char> flag_;     // -1: not worked out yet
+
+public:
+
+    reflexFlags(const std::vector<contactLoop>& loops, double angleTolerance)
+    :
+        loops_(loops),
+        angleTolerance_(angleTolerance)
+    {
+        start_.reserve(loops.size() + 1);
+        start_.push_back(0);
+        for (const contactLoop& l : loops)
+        {
+            start_.push_back(start_.back() + l.vertices.size());
+        }
+        flag_.assign(start_.back(), -1);
+    }
+
+    bool operator()(int loop, int v)
+    {
+        signed char& f = flag_[start_[loop] + v];
+        if (f < 0) f = isReflex(loops_[loop], v, angleTolerance_);
+        return f;
+    }
+};
+
+
+//- Buffers every pair search reuses, so that the many small pairs of a
+//  packing do not allocate
+struct pairBuffers
+{
+    std::vector<int> edgesA, edgesB;
+    std::vector<boxSearch::box> boxesA, boxesB;
+    std::vector<std::pair<int, int>> edgePairs;
+    std::vector<contactCandidate> candidates, edgeEdge;
+    std::vector<vertexRef> edgeEdgeVertices;
+    std::vector<std::pair<vertexRef, contactCandidate>> grouped;
+};
 
 
 //- Tributary length of a vertex contact: half of each of the vertex's own
@@ -95,8 +123,16 @@ double vertexLength(const contactLoop& l, int i)
 double fit(const contactLoop& vl, int v, const contactLoop& el, int e)
 {
     const vec n = outwardNormal(el.edgeStart(e).x, el.edgeEnd(e).x);
+    const vec& x = vl.vertices[v].x;
     double result = 1;
-    for (const vec& u : edgeDirections(vl, v)) result = std::min(result, u.dot(n));
+    // u runs along the vertex's own edges (one at the ends of an open
+    // polyline; a zero-length edge has no direction)
+    for (const int j : {prevVertex(vl, v), nextVertex(vl, v)})
+    {
+        if (j < 0 || (vl.vertices[j].x - x).norm() == 0) continue;
+        const vec u = (vl.vertices[j].x - x).normalized();
+        result = std::min(result, u.dot(n));
+    }
     return result;
 }
 
@@ -140,27 +176,74 @@ class pairSearch
     const double d_;
     const double angleTolerance_;
     const int la_, lb_;
+    reflexFlags& reflex_;
+    pairBuffers& buf_;
 
-    std::vector<contactCandidate> edgeEdge_;
-    std::set<vertexRef> edgeEdgeVertices_;
-
-    std::vector<boxSearch::box> edgeBoxes(const contactLoop& l) const
+    //- Edges of l whose boxes, enlarged by d, meet the box near: only those
+    //  can have an enlarged box meeting one of the other loop's
+    void nearEdges
+    (
+        const contactLoop& l,
+        const boxSearch::box& near,
+        std::vector<int>& edges,
+        std::vector<boxSearch::box>& boxes
+    ) const
     {
-        std::vector<boxSearch::box> result;
+        edges.clear();
+        boxes.clear();
         for (std::size_t e = 0; e < l.nEdges(); ++e)
         {
             boxSearch::box b =
                 boxSearch::segmentBox(l.edgeStart(e).x, l.edgeEnd(e).x);
             b.min().array() -= d_;
             b.max().array() += d_;
-            result.push_back(b);
+            if (!b.intersects(near)) continue;
+            edges.push_back(int(e));
+            boxes.push_back(b);
         }
-        return result;
+    }
+
+    //- Edge pairs (of a, of b) whose enlarged boxes meet, sorted: all pairs
+    //  tested when there are few (two grains), the box search otherwise
+    void findEdgePairs(const boxSearch::box& boxA, const boxSearch::box& boxB)
+    {
+        nearEdges(loops_[la_], boxB, buf_.edgesA, buf_.boxesA);
+        nearEdges(loops_[lb_], boxA, buf_.edgesB, buf_.boxesB);
+        const auto& ea = buf_.edgesA;
+        const auto& eb = buf_.edgesB;
+        buf_.edgePairs.clear();
+        if (ea.size()*eb.size() <= 4096)
+        {
+            for (std::size_t i = 0; i < ea.size(); ++i)
+            {
+                for (std::size_t j = 0; j < eb.size(); ++j)
+                {
+                    if (buf_.boxesA[i].intersects(buf_.boxesB[j]))
+                    {
+                        buf_.edgePairs.emplace_back(ea[i], eb[j]);
+                    }
+                }
+            }
+            return;
+        }
+        for (const auto& [i, j] : boxSearch::pairs(buf_.boxesA, buf_.boxesB))
+        {
+            buf_.edgePairs.emplace_back(ea[i], eb[j]);
+        }
     }
 
     bool reflex(int loop, int v) const
     {
-        return isReflex(loops_[loop], v, angleTolerance_);
+        return reflex_(loop, v);
+    }
+
+    bool endsEdgeEdge(int loop, int v) const
+    {
+        return std::binary_search
+        (
+            buf_.edgeEdgeVertices.begin(), buf_.edgeEdgeVertices.end(),
+            vertexRef(loop, v)
+        );
     }
 
     int edgeVertex(int loop, int e, int end) const
@@ -226,8 +309,8 @@ class pairSearch
         {
             c.type = contactCandidate::edgeEdge;
             c.length = length;
-            edgeEdge_.push_back(c);
-            edgeEdgeVertices_.insert({c.vertexLoop, c.vertex});
+            buf_.edgeEdge.push_back(c);
+            buf_.edgeEdgeVertices.emplace_back(c.vertexLoop, c.vertex);
         }
     }
 
@@ -236,22 +319,33 @@ public:
     pairSearch
     (
         const std::vector<contactLoop>& loops,
-        double d, double angleTolerance, int la, int lb
+        double d, double angleTolerance, int la, int lb,
+        reflexFlags& reflex, pairBuffers& buf
     )
     :
-        loops_(loops), d_(d), angleTolerance_(angleTolerance), la_(la), lb_(lb)
-    {}
-
-    void run(std::vector<contactCandidate>& out)
+        loops_(loops), d_(d), angleTolerance_(angleTolerance), la_(la), lb_(lb),
+        reflex_(reflex), buf_(buf)
     {
-        const auto edgePairs =
-            boxSearch::pairs(edgeBoxes(loops_[la_]), edgeBoxes(loops_[lb_]));
+        buf_.edgeEdge.clear();
+        buf_.edgeEdgeVertices.clear();
+        buf_.grouped.clear();
+    }
+
+    //- boxA, boxB: the loops' boxes enlarged by d
+    void run
+    (
+        const boxSearch::box& boxA,
+        const boxSearch::box& boxB,
+        std::vector<contactCandidate>& out
+    )
+    {
+        findEdgePairs(boxA, boxB);
 
         // Every (vertex, edge) the edge pairs bring together, both ways
-        std::vector<contactCandidate> candidates;
-        for (const auto& [i, j] : edgePairs)
+        std::vector<contactCandidate>& candidates = buf_.candidates;
+        candidates.clear();
+        for (const auto& [ea, eb] : buf_.edgePairs)
         {
-            const int ea = int(i), eb = int(j);
             for (int end = 0; end < 2; ++end)
             {
                 candidates.push_back(make(la_, edgeVertex(la_, ea, end), lb_, eb));
@@ -259,6 +353,10 @@ public:
             }
             edgeEdge(ea, eb);
         }
+        std::sort
+        (
+            buf_.edgeEdgeVertices.begin(), buf_.edgeEdgeVertices.end()
+        );
         std::sort(candidates.begin(), candidates.end());
         candidates.erase
         (
@@ -271,7 +369,7 @@ public:
         );
 
         // Vertex-to-vertex groups, keyed by (vertex of a, vertex of b)
-        std::map<std::pair<int, int>, std::vector<contactCandidate>> groups;
+        auto& groups = buf_.grouped;
         for (contactCandidate& c : candidates)
         {
             if (reflex(c.vertexLoop, c.vertex) || !admissible(c)) continue;
@@ -287,7 +385,7 @@ public:
                 grouped = true;
                 const auto g = c.vertexLoop == la_
                     ? std::make_pair(c.vertex, w) : std::make_pair(w, c.vertex);
-                groups[g].push_back(c);
+                groups.emplace_back(g, c);
             }
             if (!grouped)
             {
@@ -298,20 +396,27 @@ public:
             }
         }
 
-        for (auto& [g, members] : groups)
+        std::stable_sort
+        (
+            groups.begin(), groups.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; }
+        );
+        for (auto first = groups.begin(); first != groups.end();)
         {
-            if
-            (
-                edgeEdgeVertices_.count({la_, g.first})
-             || edgeEdgeVertices_.count({lb_, g.second})
-            )
+            const vertexRef g = first->first;
+            auto last = first;
+            while (last != groups.end() && last->first == g) ++last;
+            const auto members = std::make_pair(first, last);
+            first = last;
+            if (endsEdgeEdge(la_, g.first) || endsEdgeEdge(lb_, g.second))
             {
                 continue;
             }
             const contactCandidate* best = nullptr;
             double bestFit = -2;
-            for (const contactCandidate& c : members)
+            for (auto m = members.first; m != members.second; ++m)
             {
+                const contactCandidate& c = m->second;
                 const double f =
                     fit(loops_[c.vertexLoop], c.vertex, loops_[c.edgeLoop], c.edge);
                 if (f > bestFit || (f == bestFit && c < *best))
@@ -326,7 +431,7 @@ public:
             out.push_back(c);
         }
 
-        out.insert(out.end(), edgeEdge_.begin(), edgeEdge_.end());
+        out.insert(out.end(), buf_.edgeEdge.begin(), buf_.edgeEdge.end());
     }
 };
 
@@ -388,7 +493,7 @@ std::vector<contactCandidate> tidy
 (
     const std::vector<contactLoop>& loops,
     std::vector<contactCandidate> all,
-    double angleTolerance
+    reflexFlags& reflex
 )
 {
     // Edge-to-edge records first within each key
@@ -419,7 +524,7 @@ std::vector<contactCandidate> tidy
         }
         const contactLoop& el = loops[c.edgeLoop];
         const int shared = sharedVertex(el, p, c);
-        if (shared >= 0 && !isReflex(el, shared, angleTolerance))
+        if (shared >= 0 && !reflex(c.edgeLoop, shared))
         {
             const double length = mergedLength(p, c);
             const contactLoop& vl = loops[c.vertexLoop];
@@ -433,6 +538,16 @@ std::vector<contactCandidate> tidy
         result.push_back(c);
     }
     return result;
+}
+
+//- Box of a loop's vertices enlarged by d
+boxSearch::box enlargedBox(const contactLoop& l, double d)
+{
+    boxSearch::box b;
+    for (const contactVertex& v : l.vertices) b.extend(v.x);
+    b.min().array() -= d;
+    b.max().array() += d;
+    return b;
 }
 
 } // End anonymous namespace
@@ -481,11 +596,7 @@ std::vector<std::pair<std::size_t, std::size_t>> contactSearch::loopPairs
     for (std::size_t i = 0; i < loops.size(); ++i)
     {
         if (loops[i].nEdges() == 0) continue;
-        boxSearch::box b;
-        for (const contactVertex& v : loops[i].vertices) b.extend(v.x);
-        b.min().array() -= distance_;
-        b.max().array() += distance_;
-        boxes.push_back(b);
+        boxes.push_back(enlargedBox(loops[i], distance_));
         loopOfBox.push_back(i);
     }
 
@@ -505,12 +616,33 @@ std::vector<contactCandidate> contactSearch::find
     const std::vector<contactLoop>& loops
 ) const
 {
-    std::vector<contactCandidate> all;
-    for (const auto& [a, b] : loopPairs(loops))
+    const auto pairs = loopPairs(loops);
+    reflexFlags reflex(loops, angleTolerance_);
+    pairBuffers buffers;
+
+    // The boxes of the loops in pairs, each once
+    std::vector<boxSearch::box> boxes(loops.size());
+    std::vector<bool> boxed(loops.size(), false);
+    for (const auto& [a, b] : pairs)
     {
-        pairSearch(loops, distance_, angleTolerance_, int(a), int(b)).run(all);
+        for (const std::size_t i : {a, b})
+        {
+            if (boxed[i]) continue;
+            boxes[i] = enlargedBox(loops[i], distance_);
+            boxed[i] = true;
+        }
     }
-    return tidy(loops, std::move(all), angleTolerance_);
+
+    std::vector<contactCandidate> all;
+    all.reserve(8*pairs.size());
+    for (const auto& [a, b] : pairs)
+    {
+        pairSearch
+        (
+            loops, distance_, angleTolerance_, int(a), int(b), reflex, buffers
+        ).run(boxes[a], boxes[b], all);
+    }
+    return tidy(loops, std::move(all), reflex);
 }
 
 } // End namespace nmm
