@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <tuple>
@@ -98,7 +99,8 @@ struct pairBuffers
     std::vector<int> edgesA, edgesB;
     std::vector<boxSearch::box> boxesA, boxesB;
     std::vector<std::pair<int, int>> edgePairs;
-    std::vector<contactCandidate> candidates, edgeEdge;
+    std::vector<std::uint64_t> keys;
+    std::vector<contactCandidate> edgeEdge;
     std::vector<vertexRef> edgeEdgeVertices;
     std::vector<std::pair<vertexRef, contactCandidate>> grouped;
 };
@@ -237,6 +239,21 @@ class pairSearch
         return reflex_(loop, v);
     }
 
+    //- (vertex, edge) of this pair as one integer ordered as the key
+    //  (vertexLoop, vertex, edgeLoop, edge): side 0 for a's vertices
+    //  against b's edges (la < lb), 1 for the other way
+    static std::uint64_t packedKey(int side, int v, int e)
+    {
+        return std::uint64_t(side) << 62 | std::uint64_t(v) << 31 | std::uint64_t(e);
+    }
+
+    contactCandidate unpack(std::uint64_t k) const
+    {
+        const int v = int((k >> 31) & 0x7fffffff);
+        const int e = int(k & 0x7fffffff);
+        return k >> 62 ? make(lb_, v, la_, e) : make(la_, v, lb_, e);
+    }
+
     bool endsEdgeEdge(int loop, int v) const
     {
         return std::binary_search
@@ -341,15 +358,16 @@ public:
     {
         findEdgePairs(boxA, boxB);
 
-        // Every (vertex, edge) the edge pairs bring together, both ways
-        std::vector<contactCandidate>& candidates = buf_.candidates;
-        candidates.clear();
+        // Every (vertex, edge) the edge pairs bring together, both ways,
+        // once each, in key order
+        std::vector<std::uint64_t>& keys = buf_.keys;
+        keys.clear();
         for (const auto& [ea, eb] : buf_.edgePairs)
         {
             for (int end = 0; end < 2; ++end)
             {
-                candidates.push_back(make(la_, edgeVertex(la_, ea, end), lb_, eb));
-                candidates.push_back(make(lb_, edgeVertex(lb_, eb, end), la_, ea));
+                keys.push_back(packedKey(0, edgeVertex(la_, ea, end), eb));
+                keys.push_back(packedKey(1, edgeVertex(lb_, eb, end), ea));
             }
             edgeEdge(ea, eb);
         }
@@ -357,21 +375,14 @@ public:
         (
             buf_.edgeEdgeVertices.begin(), buf_.edgeEdgeVertices.end()
         );
-        std::sort(candidates.begin(), candidates.end());
-        candidates.erase
-        (
-            std::unique
-            (
-                candidates.begin(), candidates.end(),
-                [](const auto& x, const auto& y) { return key(x) == key(y); }
-            ),
-            candidates.end()
-        );
+        std::sort(keys.begin(), keys.end());
+        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
 
         // Vertex-to-vertex groups, keyed by (vertex of a, vertex of b)
         auto& groups = buf_.grouped;
-        for (contactCandidate& c : candidates)
+        for (const std::uint64_t k : keys)
         {
+            contactCandidate c = unpack(k);
             if (reflex(c.vertexLoop, c.vertex) || !admissible(c)) continue;
 
             const vec& x = loops_[c.vertexLoop].vertices[c.vertex].x;
