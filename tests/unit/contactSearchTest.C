@@ -7,6 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
 #include <vector>
 
 using nmm::contactCandidate;
@@ -45,6 +49,26 @@ contactLoop rect(int block, double x0, double y0, double x1, double y1)
 }
 
 using V = Eigen::Vector2d;
+
+//- Counter-clockwise unit square at o, every side cut in n equal pieces,
+//  the cut points computed from the side's first corner (as the benchmark
+//  does): facing sides of neighbours agree only up to rounding
+contactLoop splitSquare(int block, const V& o, int n)
+{
+    const V corner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    std::vector<V> points;
+    for (int k = 0; k < 4; ++k)
+    {
+        for (int c = 0; c < n; ++c)
+        {
+            points.push_back
+            (
+                o + corner[k] + (corner[(k + 1)%4] - corner[k])*double(c)/n
+            );
+        }
+    }
+    return loop(block, points);
+}
 
 } // End anonymous namespace
 
@@ -329,6 +353,127 @@ TEST(contactSearch, gridOf10000Squares)
     const auto c = contactSearch(d).find(loops);
     // Two edge-to-edge contacts per side-by-side pair
     EXPECT_EQ(c.size(), std::size_t(2*2*n*(n - 1)));
+}
+
+
+// Squares with every side cut in 4, 0.08 apart, on rows 57 to 60 of the
+// benchmark's grid: there the cut points of facing sides differ in their
+// last bits, and a vertex at the common vertex of two cut pieces must still
+// give one contact. Five contacts per side-by-side pair (the cut points).
+TEST(contactSearch, splitSquaresGiveOneContactPerCutPoint)
+{
+    const double d = 0.1, g = 0.08;
+    const int n = 4, row0 = 57;
+    std::vector<contactLoop> loops;
+    for (int i = 0; i < n; ++i)
+    {
+        for (int j = row0; j < row0 + n; ++j)
+        {
+            loops.push_back(splitSquare(int(loops.size()), V(i, j)*(1 + g), 4));
+        }
+    }
+    const auto c = contactSearch(d).find(loops);
+    EXPECT_EQ(c.size(), std::size_t(5*2*n*(n - 1)));
+
+    // The contacts of each pair of facing sides stand for the whole side
+    std::map<std::pair<int, int>, double> length;
+    for (const auto& k : c)
+    {
+        EXPECT_EQ(k.type, contactCandidate::edgeEdge);
+        length[std::minmax(k.vertexLoop, k.edgeLoop)] += k.length;
+    }
+    EXPECT_EQ(length.size(), std::size_t(2*n*(n - 1)));
+    for (const auto& [pair, l] : length) EXPECT_NEAR(l, 1, 1e-12);
+}
+
+
+// Two unit squares sharing a side, cut in 3 pieces on the left square's
+// side and in 5 on the right one's: eight edge-to-edge contacts, one at each
+// cut point and corner, each standing for half the distance to its
+// neighbours on either side, together for the whole side
+TEST(contactSearch, sharedSideCutDifferentlyOnEachFace)
+{
+    const double d = 0.1;
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{0, 0}, {1, 0}, {1, 1.0/3}, {1, 2.0/3}, {1, 1}, {0, 1}}),
+        loop(1, {{1, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 0.8}, {1, 0.6}, {1, 0.4}, {1, 0.2}})
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 8u);
+
+    std::vector<std::pair<double, double>> yAndLength;
+    double sum = 0;
+    for (const auto& k : c)
+    {
+        EXPECT_EQ(k.type, contactCandidate::edgeEdge);
+        EXPECT_NEAR(k.gap, 0, 1e-12);
+        yAndLength.emplace_back(loops[k.vertexLoop].vertices[k.vertex].x.y(), k.length);
+        sum += k.length;
+    }
+    EXPECT_NEAR(sum, 1, 1e-12);
+
+    std::sort(yAndLength.begin(), yAndLength.end());
+    const std::vector<double> y{0, 0.2, 1.0/3, 0.4, 0.6, 2.0/3, 0.8, 1};
+    for (std::size_t i = 0; i < y.size(); ++i)
+    {
+        const double below = i == 0 ? 0 : y[i] - y[i - 1];
+        const double above = i + 1 == y.size() ? 0 : y[i + 1] - y[i];
+        EXPECT_NEAR(yAndLength[i].first, y[i], 1e-12);
+        EXPECT_NEAR(yAndLength[i].second, 0.5*(below + above), 1e-12);
+    }
+}
+
+
+// A corner against a face stands for half of the corner's own two edges
+TEST(contactSearch, cornerOnAFaceHasHalfItsEdges)
+{
+    const double d = 0.1, p = 0.03;
+    const std::vector<contactLoop> loops
+    {
+        rect(0, -2, -1, 2, 0),
+        loop(1, {{0.3, -p}, {0.8, 0.5}, {0.3, 1}, {-0.2, 0.5}})
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 1u);
+    EXPECT_EQ(c[0].type, contactCandidate::vertexEdge);
+    // Both edges at the corner are sqrt(0.5^2 + 0.53^2) long
+    EXPECT_NEAR(c[0].length, std::hypot(0.5, 0.5 + p), 1e-12);
+}
+
+
+// Vertex-to-vertex: the same rule, for the corner chosen as the vertex
+TEST(contactSearch, cornerOnCornerHasHalfItsEdges)
+{
+    const double d = 0.05, g = 0.02;
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{-2, -0.5}, {0, 0}, {-2, 0.5}}),
+        loop(1, {{g, 0}, {2, -1}, {2, 0.2}})
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 1u);
+    EXPECT_EQ(c[0].type, contactCandidate::vertexVertex);
+    EXPECT_NEAR(c[0].length, std::hypot(2, 0.5), 1e-12);
+}
+
+
+// Closing crack faces both cut at x = 1: the middle contact ends two
+// overlaps, the ends of the open faces one each
+TEST(contactSearch, crackFacesShareTheirLength)
+{
+    const double d = 0.1, g = 0.01;
+    using k = contactLoop::kind;
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{0, 0}, {1, 0}, {2, 0}}, k::jointFace, 4),
+        loop(0, {{2, -g}, {1, -g}, {0, -g}}, k::jointFace, 4)
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 3u);
+    EXPECT_NEAR(c[0].length, 0.5, 1e-12);
+    EXPECT_NEAR(c[1].length, 1, 1e-12);
+    EXPECT_NEAR(c[2].length, 0.5, 1e-12);
 }
 
 

@@ -4,9 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
-#include <map>
-#include <set>
 #include <stdexcept>
 #include <tuple>
 
@@ -45,23 +44,6 @@ vec outwardNormal(const vec& a, const vec& b)
 }
 
 
-//- Unit directions from vertex i along its own edges (one at the ends of
-//  an open polyline)
-std::vector<vec> edgeDirections(const contactLoop& l, int i)
-{
-    std::vector<vec> result;
-    const vec& x = l.vertices[i].x;
-    for (const int j : {prevVertex(l, i), nextVertex(l, i)})
-    {
-        if (j >= 0 && (l.vertices[j].x - x).norm() > 0)
-        {
-            result.push_back((l.vertices[j].x - x).normalized());
-        }
-    }
-    return result;
-}
-
-
 //- The boundary turns right at vertex i by more than the tolerance: the
 //  material surrounds it, so it cannot be the vertex of a contact
 bool isReflex(const contactLoop& l, int i, double angleTolerance)
@@ -76,13 +58,83 @@ bool isReflex(const contactLoop& l, int i, double angleTolerance)
 }
 
 
+//- isReflex of every vertex of the loops, worked out when first asked: a
+//  vertex is looked at by every candidate of every pair its loop is in
+class reflexFlags
+{
+    const std::vector<contactLoop>& loops_;
+    const double angleTolerance_;
+    std::vector<std::size_t> start_;
+    std::vector<signed char> flag_;     // -1: not worked out yet
+
+public:
+
+    reflexFlags(const std::vector<contactLoop>& loops, double angleTolerance)
+    :
+        loops_(loops),
+        angleTolerance_(angleTolerance)
+    {
+        start_.reserve(loops.size() + 1);
+        start_.push_back(0);
+        for (const contactLoop& l : loops)
+        {
+            start_.push_back(start_.back() + l.vertices.size());
+        }
+        flag_.assign(start_.back(), -1);
+    }
+
+    bool operator()(int loop, int v)
+    {
+        signed char& f = flag_[start_[loop] + v];
+        if (f < 0) f = isReflex(loops_[loop], v, angleTolerance_);
+        return f;
+    }
+};
+
+
+//- Buffers every pair search reuses, so that the many small pairs of a
+//  packing do not allocate
+struct pairBuffers
+{
+    std::vector<int> edgesA, edgesB;
+    std::vector<boxSearch::box> boxesA, boxesB;
+    std::vector<std::pair<int, int>> edgePairs;
+    std::vector<std::uint64_t> keys;
+    std::vector<contactCandidate> edgeEdge;
+    std::vector<vertexRef> edgeEdgeVertices;
+    std::vector<std::pair<vertexRef, contactCandidate>> grouped;
+};
+
+
+//- Tributary length of a vertex contact: half of each of the vertex's own
+//  edges (one at the ends of an open polyline)
+double vertexLength(const contactLoop& l, int i)
+{
+    const vec& x = l.vertices[i].x;
+    double result = 0;
+    for (const int j : {prevVertex(l, i), nextVertex(l, i)})
+    {
+        if (j >= 0) result += 0.5*(l.vertices[j].x - x).norm();
+    }
+    return result;
+}
+
+
 //- How well the vertex's material wedge lies on the outer side of the
 //  candidate edge's line: min over its edge directions of u.n
 double fit(const contactLoop& vl, int v, const contactLoop& el, int e)
 {
     const vec n = outwardNormal(el.edgeStart(e).x, el.edgeEnd(e).x);
+    const vec& x = vl.vertices[v].x;
     double result = 1;
-    for (const vec& u : edgeDirections(vl, v)) result = std::min(result, u.dot(n));
+    // u runs along the vertex's own edges (one at the ends of an open
+    // polyline; a zero-length edge has no direction)
+    for (const int j : {prevVertex(vl, v), nextVertex(vl, v)})
+    {
+        if (j < 0 || (vl.vertices[j].x - x).norm() == 0) continue;
+        const vec u = (vl.vertices[j].x - x).normalized();
+        result = std::min(result, u.dot(n));
+    }
     return result;
 }
 
@@ -126,27 +178,89 @@ class pairSearch
     const double d_;
     const double angleTolerance_;
     const int la_, lb_;
+    reflexFlags& reflex_;
+    pairBuffers& buf_;
 
-    std::vector<contactCandidate> edgeEdge_;
-    std::set<vertexRef> edgeEdgeVertices_;
-
-    std::vector<boxSearch::box> edgeBoxes(const contactLoop& l) const
+    //- Edges of l whose boxes, enlarged by d, meet the box near: only those
+    //  can have an enlarged box meeting one of the other loop's
+    void nearEdges
+    (
+        const contactLoop& l,
+        const boxSearch::box& near,
+        std::vector<int>& edges,
+        std::vector<boxSearch::box>& boxes
+    ) const
     {
-        std::vector<boxSearch::box> result;
+        edges.clear();
+        boxes.clear();
         for (std::size_t e = 0; e < l.nEdges(); ++e)
         {
             boxSearch::box b =
                 boxSearch::segmentBox(l.edgeStart(e).x, l.edgeEnd(e).x);
             b.min().array() -= d_;
             b.max().array() += d_;
-            result.push_back(b);
+            if (!b.intersects(near)) continue;
+            edges.push_back(int(e));
+            boxes.push_back(b);
         }
-        return result;
+    }
+
+    //- Edge pairs (of a, of b) whose enlarged boxes meet, sorted: all pairs
+    //  tested when there are few (two grains), the box search otherwise
+    void findEdgePairs(const boxSearch::box& boxA, const boxSearch::box& boxB)
+    {
+        nearEdges(loops_[la_], boxB, buf_.edgesA, buf_.boxesA);
+        nearEdges(loops_[lb_], boxA, buf_.edgesB, buf_.boxesB);
+        const auto& ea = buf_.edgesA;
+        const auto& eb = buf_.edgesB;
+        buf_.edgePairs.clear();
+        if (ea.size()*eb.size() <= 4096)
+        {
+            for (std::size_t i = 0; i < ea.size(); ++i)
+            {
+                for (std::size_t j = 0; j < eb.size(); ++j)
+                {
+                    if (buf_.boxesA[i].intersects(buf_.boxesB[j]))
+                    {
+                        buf_.edgePairs.emplace_back(ea[i], eb[j]);
+                    }
+                }
+            }
+            return;
+        }
+        for (const auto& [i, j] : boxSearch::pairs(buf_.boxesA, buf_.boxesB))
+        {
+            buf_.edgePairs.emplace_back(ea[i], eb[j]);
+        }
     }
 
     bool reflex(int loop, int v) const
     {
-        return isReflex(loops_[loop], v, angleTolerance_);
+        return reflex_(loop, v);
+    }
+
+    //- (vertex, edge) of this pair as one integer ordered as the key
+    //  (vertexLoop, vertex, edgeLoop, edge): side 0 for a's vertices
+    //  against b's edges (la < lb), 1 for the other way
+    static std::uint64_t packedKey(int side, int v, int e)
+    {
+        return std::uint64_t(side) << 62 | std::uint64_t(v) << 31 | std::uint64_t(e);
+    }
+
+    contactCandidate unpack(std::uint64_t k) const
+    {
+        const int v = int((k >> 31) & 0x7fffffff);
+        const int e = int(k & 0x7fffffff);
+        return k >> 62 ? make(lb_, v, la_, e) : make(la_, v, lb_, e);
+    }
+
+    bool endsEdgeEdge(int loop, int v) const
+    {
+        return std::binary_search
+        (
+            buf_.edgeEdgeVertices.begin(), buf_.edgeEdgeVertices.end(),
+            vertexRef(loop, v)
+        );
     }
 
     int edgeVertex(int loop, int e, int end) const
@@ -192,13 +306,18 @@ class pairSearch
         // Ends that coincide up to rounding are one point: the lower loop's
         // vertex is taken there, the same for every pair of cut edges
         const double eps = 1e-9*std::max(la, lb);
+        // Each end stands for half of the overlap
+        const double half = 0.5*(hi - lo);
         // Low end: a's start if it lies inside b, else b's end
-        addEnd(sb1 <= eps, ea, 0, eb, 1);
+        addEnd(sb1 <= eps, ea, 0, eb, 1, half);
         // High end: a's end if it lies inside b, else b's start
-        addEnd(sb0 >= la - eps, ea, 1, eb, 0);
+        addEnd(sb0 >= la - eps, ea, 1, eb, 0, half);
     }
 
-    void addEnd(bool aInside, int ea, int aEnd, int eb, int bEnd)
+    void addEnd
+    (
+        bool aInside, int ea, int aEnd, int eb, int bEnd, double length
+    )
     {
         contactCandidate c = aInside
           ? make(la_, edgeVertex(la_, ea, aEnd), lb_, eb)
@@ -206,8 +325,9 @@ class pairSearch
         if (admissible(c))
         {
             c.type = contactCandidate::edgeEdge;
-            edgeEdge_.push_back(c);
-            edgeEdgeVertices_.insert({c.vertexLoop, c.vertex});
+            c.length = length;
+            buf_.edgeEdge.push_back(c);
+            buf_.edgeEdgeVertices.emplace_back(c.vertexLoop, c.vertex);
         }
     }
 
@@ -216,44 +336,53 @@ public:
     pairSearch
     (
         const std::vector<contactLoop>& loops,
-        double d, double angleTolerance, int la, int lb
+        double d, double angleTolerance, int la, int lb,
+        reflexFlags& reflex, pairBuffers& buf
     )
     :
-        loops_(loops), d_(d), angleTolerance_(angleTolerance), la_(la), lb_(lb)
-    {}
-
-    void run(std::vector<contactCandidate>& out)
+        loops_(loops), d_(d), angleTolerance_(angleTolerance), la_(la), lb_(lb),
+        reflex_(reflex), buf_(buf)
     {
-        const auto edgePairs =
-            boxSearch::pairs(edgeBoxes(loops_[la_]), edgeBoxes(loops_[lb_]));
+        buf_.edgeEdge.clear();
+        buf_.edgeEdgeVertices.clear();
+        buf_.grouped.clear();
+    }
 
-        // Every (vertex, edge) the edge pairs bring together, both ways
-        std::vector<contactCandidate> candidates;
-        for (const auto& [i, j] : edgePairs)
+    //- boxA, boxB: the loops' boxes enlarged by d
+    void run
+    (
+        const boxSearch::box& boxA,
+        const boxSearch::box& boxB,
+        std::vector<contactCandidate>& out
+    )
+    {
+        findEdgePairs(boxA, boxB);
+
+        // Every (vertex, edge) the edge pairs bring together, both ways,
+        // once each, in key order
+        std::vector<std::uint64_t>& keys = buf_.keys;
+        keys.clear();
+        for (const auto& [ea, eb] : buf_.edgePairs)
         {
-            const int ea = int(i), eb = int(j);
             for (int end = 0; end < 2; ++end)
             {
-                candidates.push_back(make(la_, edgeVertex(la_, ea, end), lb_, eb));
-                candidates.push_back(make(lb_, edgeVertex(lb_, eb, end), la_, ea));
+                keys.push_back(packedKey(0, edgeVertex(la_, ea, end), eb));
+                keys.push_back(packedKey(1, edgeVertex(lb_, eb, end), ea));
             }
             edgeEdge(ea, eb);
         }
-        std::sort(candidates.begin(), candidates.end());
-        candidates.erase
+        std::sort
         (
-            std::unique
-            (
-                candidates.begin(), candidates.end(),
-                [](const auto& x, const auto& y) { return key(x) == key(y); }
-            ),
-            candidates.end()
+            buf_.edgeEdgeVertices.begin(), buf_.edgeEdgeVertices.end()
         );
+        std::sort(keys.begin(), keys.end());
+        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
 
         // Vertex-to-vertex groups, keyed by (vertex of a, vertex of b)
-        std::map<std::pair<int, int>, std::vector<contactCandidate>> groups;
-        for (contactCandidate& c : candidates)
+        auto& groups = buf_.grouped;
+        for (const std::uint64_t k : keys)
         {
+            contactCandidate c = unpack(k);
             if (reflex(c.vertexLoop, c.vertex) || !admissible(c)) continue;
 
             const vec& x = loops_[c.vertexLoop].vertices[c.vertex].x;
@@ -267,30 +396,38 @@ public:
                 grouped = true;
                 const auto g = c.vertexLoop == la_
                     ? std::make_pair(c.vertex, w) : std::make_pair(w, c.vertex);
-                groups[g].push_back(c);
+                groups.emplace_back(g, c);
             }
             if (!grouped)
             {
                 c.type = nearCorner
                     ? contactCandidate::vertexVertex : contactCandidate::vertexEdge;
+                c.length = vertexLength(loops_[c.vertexLoop], c.vertex);
                 out.push_back(c);
             }
         }
 
-        for (auto& [g, members] : groups)
+        std::stable_sort
+        (
+            groups.begin(), groups.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; }
+        );
+        for (auto first = groups.begin(); first != groups.end();)
         {
-            if
-            (
-                edgeEdgeVertices_.count({la_, g.first})
-             || edgeEdgeVertices_.count({lb_, g.second})
-            )
+            const vertexRef g = first->first;
+            auto last = first;
+            while (last != groups.end() && last->first == g) ++last;
+            const auto members = std::make_pair(first, last);
+            first = last;
+            if (endsEdgeEdge(la_, g.first) || endsEdgeEdge(lb_, g.second))
             {
                 continue;
             }
             const contactCandidate* best = nullptr;
             double bestFit = -2;
-            for (const contactCandidate& c : members)
+            for (auto m = members.first; m != members.second; ++m)
             {
+                const contactCandidate& c = m->second;
                 const double f =
                     fit(loops_[c.vertexLoop], c.vertex, loops_[c.edgeLoop], c.edge);
                 if (f > bestFit || (f == bestFit && c < *best))
@@ -301,24 +438,76 @@ public:
             }
             contactCandidate c = *best;
             c.type = contactCandidate::vertexVertex;
+            c.length = vertexLength(loops_[c.vertexLoop], c.vertex);
             out.push_back(c);
         }
 
-        out.insert(out.end(), edgeEdge_.begin(), edgeEdge_.end());
+        out.insert(out.end(), buf_.edgeEdge.begin(), buf_.edgeEdge.end());
     }
 };
 
 
-//- Sort, drop repeated (vertex, edge) records (an edge-to-edge record wins),
-//  and keep one record where a vertex lies at the common vertex of two
-//  adjacent edges it was matched with
+//- Projection parameters this close to an end of an edge are at its end
+//  vertex: the same relative tolerance as for coinciding overlap ends
+constexpr double endTolerance = 1e-9;
+
+bool atStart(double t) { return t <= endTolerance; }
+
+bool atEnd(double t) { return t >= 1 - endTolerance; }
+
+
+//- The edge of loop el at whose start vertex the vertex of p and c lies,
+//  p and c being one vertex against two adjacent edges of el (p first in
+//  key order); -1 when they are not
+int sharedVertex
+(
+    const contactLoop& el,
+    const contactCandidate& p,
+    const contactCandidate& c
+)
+{
+    const bool sameVertex =
+        p.vertexLoop == c.vertexLoop && p.vertex == c.vertex
+     && p.edgeLoop == c.edgeLoop;
+    if (!sameVertex) return -1;
+
+    // p's edge ends where c's edge starts (or the loop wraps round). The
+    // vertex sits at their common vertex up to rounding: cut points computed
+    // from different corners differ in the last bits
+    const int n = int(el.vertices.size());
+    if ((p.edge + 1)%n == c.edge && atEnd(p.t) && atStart(c.t)) return c.edge;
+    if (el.closed && (c.edge + 1)%n == p.edge && atEnd(c.t) && atStart(p.t))
+    {
+        return p.edge;
+    }
+    return -1;
+}
+
+
+//- Length of two records merged into one: the edge-to-edge shares add up
+//  (the contact now ends the overlaps of both), otherwise a vertex length
+//  (the same for both, since the vertex is the same)
+double mergedLength(const contactCandidate& p, const contactCandidate& c)
+{
+    const bool pEdge = p.type == contactCandidate::edgeEdge;
+    const bool cEdge = c.type == contactCandidate::edgeEdge;
+    if (pEdge && cEdge) return p.length + c.length;
+    return cEdge ? c.length : p.length;
+}
+
+
+//- Sort, merge repeated (vertex, edge) records (an edge-to-edge record
+//  wins), and keep one record where a vertex lies at the common vertex of
+//  two adjacent edges it was matched with; merged records keep their
+//  edge-to-edge lengths
 std::vector<contactCandidate> tidy
 (
     const std::vector<contactLoop>& loops,
     std::vector<contactCandidate> all,
-    double angleTolerance
+    reflexFlags& reflex
 )
 {
+    // Edge-to-edge records first within each key
     std::sort
     (
         all.begin(), all.end(),
@@ -328,54 +517,48 @@ std::vector<contactCandidate> tidy
                  < std::make_tuple(key(y), -int(y.type));
         }
     );
-    all.erase
-    (
-        std::unique
-        (
-            all.begin(), all.end(),
-            [](const auto& x, const auto& y) { return key(x) == key(y); }
-        ),
-        all.end()
-    );
 
     std::vector<contactCandidate> result;
+    result.reserve(all.size());
     for (const contactCandidate& c : all)
     {
-        if (!result.empty())
+        if (result.empty())
         {
-            contactCandidate& p = result.back();
-            const contactLoop& el = loops[c.edgeLoop];
-            const int n = int(el.vertices.size());
-            const bool sameVertex =
-                p.vertexLoop == c.vertexLoop && p.vertex == c.vertex
-             && p.edgeLoop == c.edgeLoop;
-            // p's edge ends where c's edge starts (or the loop wraps round)
-            int shared = -1;
-            if (sameVertex && (p.edge + 1)%n == c.edge && p.t == 1 && c.t == 0)
+            result.push_back(c);
+            continue;
+        }
+        contactCandidate& p = result.back();
+        if (key(p) == key(c))
+        {
+            p.length = mergedLength(p, c);
+            continue;
+        }
+        const contactLoop& el = loops[c.edgeLoop];
+        const int shared = sharedVertex(el, p, c);
+        if (shared >= 0 && !reflex(c.edgeLoop, shared))
+        {
+            const double length = mergedLength(p, c);
+            const contactLoop& vl = loops[c.vertexLoop];
+            if (fit(vl, c.vertex, el, c.edge) > fit(vl, c.vertex, el, p.edge))
             {
-                shared = c.edge;
+                p = c;
             }
-            else if
-            (
-                sameVertex && el.closed && (c.edge + 1)%n == p.edge
-             && c.t == 1 && p.t == 0
-            )
-            {
-                shared = p.edge;
-            }
-            if (shared >= 0 && !isReflex(el, shared, angleTolerance))
-            {
-                const contactLoop& vl = loops[c.vertexLoop];
-                if (fit(vl, c.vertex, el, c.edge) > fit(vl, c.vertex, el, p.edge))
-                {
-                    p = c;
-                }
-                continue;
-            }
+            p.length = length;
+            continue;
         }
         result.push_back(c);
     }
     return result;
+}
+
+//- Box of a loop's vertices enlarged by d
+boxSearch::box enlargedBox(const contactLoop& l, double d)
+{
+    boxSearch::box b;
+    for (const contactVertex& v : l.vertices) b.extend(v.x);
+    b.min().array() -= d;
+    b.max().array() += d;
+    return b;
 }
 
 } // End anonymous namespace
@@ -424,11 +607,7 @@ std::vector<std::pair<std::size_t, std::size_t>> contactSearch::loopPairs
     for (std::size_t i = 0; i < loops.size(); ++i)
     {
         if (loops[i].nEdges() == 0) continue;
-        boxSearch::box b;
-        for (const contactVertex& v : loops[i].vertices) b.extend(v.x);
-        b.min().array() -= distance_;
-        b.max().array() += distance_;
-        boxes.push_back(b);
+        boxes.push_back(enlargedBox(loops[i], distance_));
         loopOfBox.push_back(i);
     }
 
@@ -448,12 +627,33 @@ std::vector<contactCandidate> contactSearch::find
     const std::vector<contactLoop>& loops
 ) const
 {
-    std::vector<contactCandidate> all;
-    for (const auto& [a, b] : loopPairs(loops))
+    const auto pairs = loopPairs(loops);
+    reflexFlags reflex(loops, angleTolerance_);
+    pairBuffers buffers;
+
+    // The boxes of the loops in pairs, each once
+    std::vector<boxSearch::box> boxes(loops.size());
+    std::vector<bool> boxed(loops.size(), false);
+    for (const auto& [a, b] : pairs)
     {
-        pairSearch(loops, distance_, angleTolerance_, int(a), int(b)).run(all);
+        for (const std::size_t i : {a, b})
+        {
+            if (boxed[i]) continue;
+            boxes[i] = enlargedBox(loops[i], distance_);
+            boxed[i] = true;
+        }
     }
-    return tidy(loops, std::move(all), angleTolerance_);
+
+    std::vector<contactCandidate> all;
+    all.reserve(8*pairs.size());
+    for (const auto& [a, b] : pairs)
+    {
+        pairSearch
+        (
+            loops, distance_, angleTolerance_, int(a), int(b), reflex, buffers
+        ).run(boxes[a], boxes[b], all);
+    }
+    return tidy(loops, std::move(all), reflex);
 }
 
 } // End namespace nmm
