@@ -34,6 +34,7 @@ Usage
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 
 namespace
 {
@@ -79,6 +80,14 @@ nmm::argList makeArgList()
 }
 
 
+std::string shortString(double x)
+{
+    std::ostringstream os;
+    os << x;
+    return os.str();
+}
+
+
 //- The step control of the case (system/nmmSolution's stepControl)
 nmm::stepController makeStepController
 (
@@ -110,8 +119,9 @@ bool solveStep
         const nmm::stepReport report = model.solveStep(dt);
         if (report.converged) return true;
         const auto shorter = steps.cut(dt);
-        std::cout << "    step cut: " << report.cutReason << "; deltaT "
-            << dt << " -> " << (shorter ? std::to_string(*shorter) : "none") << '\n';
+        std::cout << "    step cut: " << report.cutReason << "; deltaT " << dt << " -> ";
+        if (shorter) std::cout << *shorter << '\n';
+        else std::cout << "none (below minDeltaT)\n";
         if (!shorter) return false;
         dt = *shorter;
         runTime.setDeltaT(dt, false);
@@ -125,7 +135,9 @@ void printContacts(const nmm::nmmSolidModel& model)
     if (!model.contacts()) return;
     std::cout << "    contacts: open " << r.contacts[0] << ", bonded " << r.contacts[1]
         << ", sliding " << r.contacts[2] << "; iterations " << r.iterations
-        << ", cuts " << r.cuts << ", max penetration " << r.maxPenetration << '\n';
+        << ", cuts " << r.cuts << ", max penetration " << r.maxPenetration;
+    if (r.overlapsAtStart) std::cout << ", overlaps found " << r.overlapsAtStart;
+    std::cout << '\n';
 }
 
 
@@ -231,7 +243,7 @@ int run(int argc, char* argv[])
             throw nmm::fatalError
             (
                 "the step from time " + runTime.timeName() + " cannot be resolved "
-                "even with minDeltaT " + std::to_string(steps.settings().minDeltaT)
+                "even with minDeltaT " + shortString(steps.settings().minDeltaT)
                 + " (system/nmmSolution stepControl); the last good time "
                 + runTime.timeName() + " is written"
             );

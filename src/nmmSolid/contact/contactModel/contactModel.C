@@ -20,6 +20,9 @@ using vec = Eigen::Vector2d;
 //  by one solve)
 constexpr double frictionTolerance = 1e-2;
 
+//- State changes of one contact within a step before it is held
+constexpr int maxChangesPerStep = 3;
+
 vec tangentOf(const contactLoop& l, int e)
 {
     return (l.edgeEnd(e).x - l.edgeStart(e).x).normalized();
@@ -133,7 +136,12 @@ void contactModel::beginStep
         a.record.t = c.t;
         a.record.length = c.length;
         a.record.gap = c.gap;
-        a.gap0 = c.gap;
+        // An overlap found at the start of a step (a contact the search
+        // missed before, or one left by a step that pushed bodies
+        // together) is pushed out by at most overlapRelief per step: a
+        // penalty spring would resolve it in one step, and the momentum
+        // that gives would blow the bodies apart
+        a.gap0 = std::max(c.gap, -settings_.overlapRelief);
         a.law = &lawOf(c);
         const contactLoop& el = loops[c.edgeLoop];
         const vec s = tangentOf(el, c.edge);
@@ -246,8 +254,20 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
         q.length = r.length*thickness_;
         q.shearDisplacement = r.state == contactState::bonded ? 0 : a.ds;
 
-        const contactDecision d = a.law->decide(q);
-        if (d.state != r.state) ++counts.changes;
+        contactDecision d = a.law->decide(q);
+        if (d.state != r.state && a.changes >= maxChangesPerStep && !d.bondBroken)
+        {
+            // A contact that keeps changing within the step (stick-slip or
+            // open-close chatter between two solves) keeps the state it has
+            ++counts.held;
+            d.state = r.state;
+            d.frictionForce = a.friction;
+        }
+        if (d.state != r.state)
+        {
+            ++counts.changes;
+            ++a.changes;
+        }
         if (d.bondBroken) ++counts.bondsBroken;
         r.normalForce = isClosed(r.state) ? q.Fn : 0;
         r.shearForce = r.state == contactState::sliding ? a.friction
@@ -258,7 +278,7 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
         if (d.state == contactState::sliding && d.state == r.state
          && std::abs(friction - a.friction) > frictionTolerance*std::abs(friction))
         {
-            ++counts.changes;
+            ++counts.frictionUpdates;
         }
         r.state = d.state;
         r.bondIntact = d.bondIntact;
@@ -277,6 +297,26 @@ double contactModel::maxPenetration() const
         if (isClosed(a.record.state)) p = std::max(p, -a.record.gap);
     }
     return p;
+}
+
+
+double contactModel::maxPenetrationGrowth() const
+{
+    double p = 0;
+    for (const active& a : active_)
+    {
+        if (isClosed(a.record.state) && a.dn < 0) p = std::max(p, -a.record.gap);
+    }
+    return p;
+}
+
+
+long contactModel::overlapsAtStart() const
+{
+    return std::count_if(active_.begin(), active_.end(), [this](const active& a)
+    {
+        return a.gap0 <= -settings_.overlapRelief;
+    });
 }
 
 

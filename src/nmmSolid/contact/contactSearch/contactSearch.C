@@ -331,6 +331,20 @@ class pairSearch
         }
     }
 
+    //- The member whose vertex lies furthest on the outer side of its
+    //  edge's line, if any does: the corners are then apart
+    template<class It>
+    static const contactCandidate* separating(It first, It last)
+    {
+        const contactCandidate* best = nullptr;
+        for (auto m = first; m != last; ++m)
+        {
+            const contactCandidate& c = m->second;
+            if (c.gap > 0 && (!best || c.gap > best->gap)) best = &c;
+        }
+        return best;
+    }
+
 public:
 
     pairSearch
@@ -436,6 +450,8 @@ public:
                     bestFit = f;
                 }
             }
+            const contactCandidate* apart = separating(members.first, members.second);
+            if (best->gap < 0 && apart) best = apart;
             contactCandidate c = *best;
             c.type = contactCandidate::vertexVertex;
             c.length = vertexLength(loops_[c.vertexLoop], c.vertex);

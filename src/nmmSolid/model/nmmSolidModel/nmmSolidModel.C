@@ -114,6 +114,7 @@ void nmmSolidModel::createContacts()
     s.searchDistance = cs.searchDistance.value_or(2.5*sc.maxDisplacementRatio*halfSize_);
     s.touchTolerance = 1e-6*s.searchDistance;
     penetrationLimit_ = 0.4*s.searchDistance;
+    s.overlapRelief = 0.1*penetrationLimit_;
     contacts_ = std::make_unique<contactModel>
     (
         *parts_.cover, *parts_.elements, *parts_.geometry, *assembler_,
@@ -237,8 +238,8 @@ bool nmmSolidModel::solveWithContacts
 
     const int maxIterations = parts_.controls
         ? parts_.controls->contact().maxOpenCloseIterations : contactSettings().maxOpenCloseIterations;
-    bool settled = false;
-    for (int it = 1; it <= maxIterations && !settled; ++it)
+    bool settled = false, frictionSettled = false;
+    for (int it = 1; it <= maxIterations && !frictionSettled; ++it)
     {
         clock = cpuTime();
         const Eigen::SparseMatrix<double> K = sys.K + contacts_->matrix(n);
@@ -255,9 +256,11 @@ bool nmmSolidModel::solveWithContacts
         report.bondsBroken += counts.bondsBroken;
         logIteration(it, counts);
         settled = counts.changes == 0;
+        frictionSettled = settled && counts.frictionUpdates == 0;
     }
 
     report.maxPenetration = contacts_->maxPenetration();
+    report.overlapsAtStart = contacts_->overlapsAtStart();
     const auto patchDD = assembler_->patchDisplacements(dd);
     report.displacementRatio = patchDD.cols()
         ? patchDD.colwise().norm().maxCoeff()/halfSize_ : 0.0;
@@ -271,10 +274,10 @@ bool nmmSolidModel::solveWithContacts
         why << "the open-close iteration did not settle in " << maxIterations
             << " iterations";
     }
-    else if (report.maxPenetration > penetrationLimit_)
+    else if (contacts_->maxPenetrationGrowth() > penetrationLimit_)
     {
-        why << "penetration " << report.maxPenetration << " m exceeds the limit "
-            << penetrationLimit_ << " m";
+        why << "penetration " << contacts_->maxPenetrationGrowth()
+            << " m exceeds the limit " << penetrationLimit_ << " m";
     }
     else if (parts_.scheme.dynamic() && report.displacementRatio > maxRatio)
     {
@@ -292,6 +295,8 @@ void nmmSolidModel::logIteration(int it, const contactModel::iterationCounts& c)
     *log_ << "    open-close " << it << ": open " << c.states[0]
         << ", bonded " << c.states[1] << ", sliding " << c.states[2]
         << "; changes " << c.changes;
+    if (c.frictionUpdates) *log_ << ", friction updates " << c.frictionUpdates;
+    if (c.held) *log_ << ", held " << c.held;
     if (c.bondsBroken) *log_ << ", bonds broken " << c.bondsBroken;
     *log_ << '\n';
 }
