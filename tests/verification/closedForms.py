@@ -238,3 +238,44 @@ class waveBar:
     @classmethod
     def velocityX(cls, x, t):
         return np.where(cls.c()*t > x, cls.p0*cls.c()/cls.E, 0.0)
+
+
+# --------------------------------------------------------------------------
+# Contact cases (docs/verification.md, Contact)
+# --------------------------------------------------------------------------
+def searchDistance(halfSize, maxDisplacementRatio=0.005):
+    """The solver's automatic contact search distance (nmmSolidModel::
+    createContacts): 2.5 maxDisplacementRatio half the larger side of the
+    model's bounding box."""
+    return 2.5*maxDisplacementRatio*halfSize
+
+
+def allowedPenetration(halfSize, maxDisplacementRatio=0.005):
+    """The largest penetration a step may end with: 0.4 search distance."""
+    return 0.4*searchDistance(halfSize, maxDisplacementRatio)
+
+
+# --------------------------------------------------------------------------
+# Block on an incline at a to the horizontal, dry friction phi, from rest:
+# d(t) = g (sin a - cos a tan phi) t^2/2 while tan phi < tan a, else 0.
+# --------------------------------------------------------------------------
+class incline:
+    a = 30.0            # degrees
+    g = 9.81
+    phis = (0, 10, 20, 29, 31)
+    maxDisplacementRatio = 0.005
+
+    @classmethod
+    def slides(cls, phi):
+        return math.tan(math.radians(phi)) < math.tan(math.radians(cls.a))
+
+    @classmethod
+    def acceleration(cls, phi):
+        if not cls.slides(phi):
+            return 0.0
+        a = math.radians(cls.a)
+        return cls.g*(math.sin(a) - math.cos(a)*math.tan(math.radians(phi)))
+
+    @classmethod
+    def displacement(cls, phi, t):
+        return 0.5*cls.acceleration(phi)*t*t

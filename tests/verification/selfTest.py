@@ -212,7 +212,9 @@ CHECKERS = {"cantilever": ("checkCantilever.py", []),
             "lame": ("checkLame.py", []),
             "sneddon": ("checkSneddon.py", ["30"]),
             "freeFall": ("checkFreeFall.py", []),
-            "waveBar": ("checkWaveBar.py", [])}
+            "waveBar": ("checkWaveBar.py", []),
+            "incline": ("checkIncline.py", ["20"]),
+            "inclineStatic": ("checkIncline.py", ["31"])}
 
 
 def checker(case, workDir):

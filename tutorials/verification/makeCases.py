@@ -5,7 +5,10 @@ Usage (from anywhere; plain python3, standard library only):
     tutorials/verification/makeCases.py
 
 Writes system/, constant/ and 0/ of cantilever, plateHole, plateHoleFoam,
-lame, freeFall, waveBar and sneddon/angle{0,30,45}. The files it writes
+lame, freeFall, waveBar and sneddon/angle{0,30,45}; and the whole of the
+contact cases (docs/verification.md, Contact) under contact/:
+incline/phi{0,10,20,29,31}, pushedBlock, bouncingBlock/{trapezoidal,DDA}
+(their Allrun, Allclean and README.md too). The files it writes
 are committed, so running it is only needed after changing a parameter
 here; the README of each case explains the choices. The polygons of the
 curved boundaries are written out in full (64 chords per quarter circle,
@@ -444,6 +447,180 @@ def plateHoleFoam():
 """)
 
 
+# --------------------------------------------------------------------------
+# Contact cases (docs/verification.md, Contact). Each is a whole tutorial:
+# the dictionaries, Allrun, Allclean and a README.md.
+
+def scripts(case, checker):
+    """Allrun and Allclean of a case under contact/ (depth from the
+    project folder taken from the case path)."""
+    up = "/".join([".."]*(len(Path(case).parts) + 2))
+    for name, tools, body in (
+            ("Allrun", "RunFunctions", """\
+# Covers and manifold elements (constant/nmmMesh, VTK/mesh.vtu), then the
+# solver (VTK/<case>_<index>.vtu, VTK/<case>.vtu.series, contacts_<index>.vtp).
+# Compare with the closed form: tests/verification/%s (see README.md).
+runApplication nmmMesh || exit 1
+runApplication $(getApplication) || exit 1
+""" % checker),
+            ("Allclean", "CleanFunctions", "cleanCase\n")):
+        path = HERE/case/name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text("""\
+#!/bin/bash
+cd "${0%%/*}" || exit                                # Run from this directory
+. ${NMM_PROJECT_DIR:-$(cd %s && pwd)}/bin/tools/%s
+#------------------------------------------------------------------------------
+
+%s
+#------------------------------------------------------------------------------
+""" % (up, tools, body))
+        path.chmod(0o755)
+
+
+def readme(case, text):
+    (HERE/case).mkdir(parents=True, exist_ok=True)
+    (HERE/case/"README.md").write_text(text)
+
+
+def dynamicControlDict(case, endTime, deltaT, writeInterval, comment,
+                       adjust=False):
+    write(case, "system/controlDict", "system", "controlDict", """\
+// %s
+application     nmmSolidFoam;
+
+startFrom       startTime;
+
+startTime       0;
+
+stopAt          endTime;
+
+endTime         %s;
+
+deltaT          %s;
+
+writeControl    adjustableRunTime;
+
+writeInterval   %s;
+
+purgeWrite      0;
+
+writeFormat     binary;         // VTK frames exact and compact
+
+writePrecision  12;
+
+timeFormat      general;
+
+timePrecision   8;
+
+runTimeModifiable yes;
+
+adjustTimeStep  %s;
+
+functions
+{
+}
+""" % (comment, endTime, deltaT, writeInterval, "yes" if adjust else "no"))
+
+
+def gravity(case, gx, gy, comment=""):
+    write(case, "constant/g", "constant", "g", comment + """\
+dimensions      [0 1 -2 0 0 0 0];
+
+value           (%s %s 0);
+""" % (fmt(gx), fmt(gy)), cls="uniformDimensionedVectorField")
+
+
+def contactLaw(case, frictionAngle, cohesion=0, tensileStrength=0,
+               initialState="open", comment=""):
+    write(case, "constant/contactProperties", "constant", "contactProperties",
+          comment + """\
+default
+{
+    law             mohrCoulomb;
+    frictionAngle   %s;         // degrees
+    cohesion        %s;          // [Pa]
+    tensileStrength %s;          // [Pa]
+    initialState    %s;
+}
+""" % (fmt(frictionAngle), fmt(cohesion), fmt(tensileStrength), initialState))
+
+
+def contactSolution(case, scheme, contact="", stepControl="", comment=""):
+    write(case, "system/nmmSolution", "system", "nmmSolution", comment + """\
+analysis        dynamic;
+
+timeScheme      %s
+
+contact
+{
+    method                  penalty;
+%s}
+
+stepControl
+{
+%s}
+
+linearSolver    { type cholmod; }
+""" % (scheme, contact, stepControl))
+
+
+DDA = "{ type DDA; velocityRatio 1; }"
+TRAPEZOIDAL = "{ type Newmark; beta 0.25; gamma 0.5; }"
+
+
+def incline(phiDeg):
+    """A 1 x 1 block on a 4 x 0.5 base fixed at its bottom; the slope is
+    made by tilting gravity by a = 30 degrees, not the geometry."""
+    c = "contact/incline/phi%d" % phiDeg
+    a = math.radians(30.0)
+    dynamicControlDict(c, 1, 0.01, 0.1, "100 steps of 0.01 s, written every 0.1 s")
+    contactSolution(c, DDA, stepControl="    maxDisplacementRatio    0.005;\n",
+                    comment="// DDA (Newmark beta = 1/2, gamma = 1): exact for constant\n"
+                    "// accelerations; automatic penalties (50 E normal)\n")
+    mechanicalProperties(c, False, "rock", "1e9", "0.25", "2000")
+    gravity(c, 9.81*math.sin(a), -9.81*math.cos(a),
+            "// |g| = 9.81 at a = 30 degrees to -y: the base is the incline\n")
+    contactLaw(c, phiDeg, comment="// Dry friction only: phi = %d degrees (tan a = %.4f, tan phi = %.4f)\n"
+               % (phiDeg, math.tan(a), math.tan(math.radians(phiDeg))))
+    meshDict(c, """\
+    base   { material rock; polygon ((0 -0.5) (4 -0.5) (4 0) (0 0)); }
+    slider { material rock; polygon ((0.25 0) (1.25 0) (1.25 1) (0.25 1)); }
+""", """\
+    fixed       { type box; min (-1 -0.500001); max (5 -0.499999); }
+""", """\
+    type        structured;
+    cellSize    0.25;
+""")
+    D(c, """\
+    fixed       { type fixedValue; value uniform (0 0 0); }
+""")
+    scripts(c, "checkIncline.py")
+    readme(c, """\
+# incline/phi%d: a block sliding (or not) on an incline
+
+Dry (Mohr-Coulomb, no cohesion) friction at phi = %d degrees on a slope of
+a = 30 degrees. The slope is made by tilting gravity: g = 9.81 (sin a,
+-cos a), so that the base's top face is the incline and the slider moves
+along x. From rest,
+
+    d(t) = g (sin a - cos a tan phi) t^2/2   if tan phi < tan a,
+    d(t) = 0                                  otherwise.
+
+Base 4 x 0.5 (bottom edge fixed), slider 1 x 1 resting on it at
+x = 0.25..1.25; E = 1e9, nu = 0.25, rho = 2000, plane strain; automatic
+penalties (normal 50 E); structured cover, cellSize 0.25. DDA
+(`velocityRatio 1`), deltaT 0.01 s, 100 steps, frames every 0.1 s.
+
+Check (`tests/verification/checkIncline.py <case> %d`): the mean x
+displacement of the slider's elements in the last frame (t about 1 s,
+compared at the frame's own time) within 1%% of d(t); when the block
+sticks (phi >= a), its drift below the allowed penetration, 0.4 times
+the search distance (2.5 maxDisplacementRatio half the larger side of
+the model's bounding box: 0.01 m here).
+""" % (phiDeg, phiDeg, phiDeg))
+
+
 if __name__ == "__main__":
     cantilever()
     plateHole()
@@ -453,3 +630,5 @@ if __name__ == "__main__":
     waveBar()
     for angle in (0, 30, 45):
         sneddon(angle)
+    for phi in (0, 10, 20, 29, 31):
+        incline(phi)

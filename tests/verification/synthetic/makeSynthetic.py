@@ -7,7 +7,8 @@ fails on wrong data.
 Usage:
     makeSynthetic.py <case> <outDir> [--tamper] [--level k]
 
-case: cantilever | plateHole | lame | sneddon | freeFall | waveBar
+case: cantilever | plateHole | lame | sneddon | freeFall | waveBar |
+      incline (phi 20) | inclineStatic (phi 31)
 Writes <outDir>/VTK/<name>_<index>.vtu and <outDir>/VTK/<name>.vtu.series
 (name = the folder name of outDir) in the solver's layout: polygons in the
 deformed position, point and cell data D, U (3 components), sigma (6: xx yy
@@ -20,6 +21,8 @@ closedForms.py at the points (point data) and at the element centroids
     lame        displacements, stresses x 1.03
     sneddon     crack opening x 0.97          freeFall   one point off by 1e-8
     waveBar     c x 0.95
+    incline     slider displacement x 1.02
+    inclineStatic  slider creeping 0.02 m in 1 s
 --level k (cantilever only) writes refinement level k, for the rates.
 
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -68,7 +71,7 @@ def sigma6(sxx, syy, sxy, nu, planeStress):
     return np.column_stack([sxx, syy, szz, sxy, z, z])
 
 
-def writeFrame(path, X, cells, D, U, Sp, Dc, Uc, Sc):
+def writeFrame(path, X, cells, D, U, Sp, Dc, Uc, Sc, blockId=None):
     from vtkmodules.vtkCommonCore import vtkPoints, vtkIdList
     from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid, VTK_POLYGON
     from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
@@ -101,7 +104,8 @@ def writeFrame(path, X, cells, D, U, Sp, Dc, Uc, Sc):
     add(cd, "D", vec3(Dc))
     add(cd, "U", vec3(Uc))
     add(cd, "sigma", Sc)
-    add(cd, "blockId", np.zeros(len(cells), dtype=np.int32))
+    add(cd, "blockId", np.zeros(len(cells), dtype=np.int32) if blockId is None
+        else np.asarray(blockId, dtype=np.int32))
     add(cd, "materialId", np.zeros(len(cells), dtype=np.int32))
     w = vtkXMLUnstructuredGridWriter()
     w.SetFileName(str(path))
@@ -117,9 +121,9 @@ class writer:
         (self.dir/"VTK").mkdir(parents=True, exist_ok=True)
         self.files = []
 
-    def frame(self, index, time, X, cells, D, U, Sp, Dc, Uc, Sc):
+    def frame(self, index, time, X, cells, D, U, Sp, Dc, Uc, Sc, blockId=None):
         fname = "%s_%d.vtu" % (self.name, index)
-        writeFrame(self.dir/"VTK"/fname, X, cells, D, U, Sp, Dc, Uc, Sc)
+        writeFrame(self.dir/"VTK"/fname, X, cells, D, U, Sp, Dc, Uc, Sc, blockId)
         self.files.append({"name": fname, "time": time})
 
     def close(self):
@@ -260,8 +264,65 @@ def waveBar(out, tamper):
     w.close()
 
 
+def twoBlocks(lower, upper, n=4):
+    """Points and triangles of two rectangles ((x0, y0), (x1, y1)), the
+    points of each block its own, and the blockId of each triangle."""
+    X = []
+    cells = []
+    ids = []
+    for b, ((x0, y0), (x1, y1)) in enumerate((lower, upper)):
+        Xb, cb = gridMesh(np.linspace(x0, x1, n + 1), np.linspace(y0, y1, n + 1))
+        off = sum(len(x) for x in X)
+        X.append(Xb)
+        cells += [[p + off for p in c] for c in cb]
+        ids += [b]*len(cb)
+    return np.vstack(X), cells, np.array(ids)
+
+
+def rigidMotion(out, X, cells, ids, times, upperD, upperU=None):
+    """Frames where block 0 stays put and block 1 moves rigidly by
+    upperD(t) (a 2-vector), with velocity upperU(t)."""
+    w = writer(out)
+    z6 = np.zeros((len(X), 6))
+    zc6 = np.zeros((len(cells), 6))
+    pointBlock = np.zeros(len(X), dtype=int)
+    for c, b in zip(cells, ids):
+        pointBlock[c] = b
+    for i, t in enumerate(times):
+        d = np.asarray(upperD(t), dtype=float)
+        u = np.asarray(upperU(t) if upperU else (0.0, 0.0), dtype=float)
+        D = np.where(pointBlock[:, None] == 1, d, 0.0)*np.ones((len(X), 2))
+        U = np.where(pointBlock[:, None] == 1, u, 0.0)*np.ones((len(X), 2))
+        Dc = np.where(ids[:, None] == 1, d, 0.0)*np.ones((len(cells), 2))
+        Uc = np.where(ids[:, None] == 1, u, 0.0)*np.ones((len(cells), 2))
+        w.frame(i, t, X, cells, D, U, z6, Dc, Uc, zc6, blockId=ids)
+    w.close()
+
+
+def incline(out, tamper, phi=20.0):
+    """The tutorial's blocks (base 4 x 0.5, slider 1 x 1); the slider moves
+    by the closed form d(t) (x 1.02 when tampered)."""
+    c = cf.incline
+    X, cells, ids = twoBlocks(((0, -0.5), (4, 0)), ((0.25, 0), (1.25, 1)))
+    s = 1.02 if tamper else 1.0
+    times = [0.1*i + 1e-3*(i == 10) for i in range(11)]
+    rigidMotion(out, X, cells, ids, times,
+                lambda t: (s*c.displacement(phi, t), 0.0))
+
+
+def inclineStatic(out, tamper):
+    """phi = 31: the slider sticks; tampered, it creeps by 0.02 m (twice
+    the allowed penetration) by t = 1."""
+    c = cf.incline
+    X, cells, ids = twoBlocks(((0, -0.5), (4, 0)), ((0.25, 0), (1.25, 1)))
+    times = [0.1*i for i in range(11)]
+    rigidMotion(out, X, cells, ids, times,
+                lambda t: ((0.02*t if tamper else 1e-4*t), -1e-6))
+
+
 CASES = {"cantilever": cantilever, "plateHole": plateHole, "lame": lame,
-         "sneddon": sneddon, "freeFall": freeFall, "waveBar": waveBar}
+         "sneddon": sneddon, "freeFall": freeFall, "waveBar": waveBar,
+         "incline": incline, "inclineStatic": inclineStatic}
 
 
 def main(argv):
