@@ -279,3 +279,36 @@ class incline:
     @classmethod
     def displacement(cls, phi, t):
         return 0.5*cls.acceleration(phi)*t*t
+
+
+# --------------------------------------------------------------------------
+# Bouncing block: a rigid 1 x 1 block dropped from h0 onto a fixed base
+# through frictionless penalty springs (kN per closed contact point, all in
+# parallel for a vertical impact): omega = sqrt(n kN/m). Elastic contact
+# conserves energy, so every rebound reaches h0 (trapezoidal rule).
+# --------------------------------------------------------------------------
+class bouncingBlock:
+    h0 = 1.0
+    g = 9.81
+    rho = 2000.0
+    area = 1.0
+    normalPenalty = 5e6
+    deltaT = 1e-3
+    trapezoidalTolerance = 0.03     # rebound height / h0
+    energyDriftPerBounce = 0.01
+
+    @classmethod
+    def mass(cls):
+        return cls.rho*cls.area
+
+    @classmethod
+    def impactSpeed(cls):
+        return math.sqrt(2*cls.g*cls.h0)
+
+    @classmethod
+    def impactTime(cls):
+        return math.sqrt(2*cls.h0/cls.g)
+
+    @classmethod
+    def omega(cls, nContacts):
+        return math.sqrt(nContacts*cls.normalPenalty/cls.mass())

@@ -214,7 +214,9 @@ CHECKERS = {"cantilever": ("checkCantilever.py", []),
             "freeFall": ("checkFreeFall.py", []),
             "waveBar": ("checkWaveBar.py", []),
             "incline": ("checkIncline.py", ["20"]),
-            "inclineStatic": ("checkIncline.py", ["31"])}
+            "inclineStatic": ("checkIncline.py", ["31"]),
+            "bouncingBlock": ("checkBouncingBlock.py", ["trapezoidal"]),
+            "bouncingBlockDDA": ("checkBouncingBlock.py", ["DDA"])}
 
 
 def checker(case, workDir):

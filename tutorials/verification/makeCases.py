@@ -621,6 +621,69 @@ the model's bounding box: 0.01 m here).
 """ % (phiDeg, phiDeg, phiDeg))
 
 
+def bouncingBlock(scheme):
+    """A 1 x 1 block dropped from h0 = 1 onto a base fixed at its bottom.
+    The contact spring is much softer than the blocks (normalPenalty 5e6
+    against E = 1e9), so that the blocks stay rigid and the impact is
+    that of a mass on a spring: with the trapezoidal rule it rebounds to
+    h0; DDA damps it (restitution reported against omega dt)."""
+    c = "contact/bouncingBlock/%s" % scheme
+    trapezoidal = scheme == "trapezoidal"
+    dynamicControlDict(c, 1.9, 1e-3, 0.005,
+                       "1900 steps of 1e-3 s (two bounces), written every 5e-3 s")
+    contactSolution(
+        c, TRAPEZOIDAL if trapezoidal else DDA,
+        contact="    normalPenalty           5e6;\n",
+        stepControl="    maxDisplacementRatio    0.05;\n",
+        comment=("// Trapezoidal rule: no numerical damping\n" if trapezoidal else
+                 "// DDA (Newmark beta = 1/2, gamma = 1): numerically damped\n")
+        + "// Contact springs 5e6 N/m per contact point, far softer than the\n"
+        "// blocks; maxDisplacementRatio 0.05 gives a search distance of\n"
+        "// 0.156 m, so that the impact's penetration (v/omega) is allowed\n")
+    mechanicalProperties(c, False, "rock", "1e9", "0.25", "2000")
+    gravity(c, 0, -9.81)
+    contactLaw(c, 0, comment="// Frictionless: the block only bounces\n")
+    meshDict(c, """\
+    base  { material rock; polygon ((-0.5 -0.5) (1.5 -0.5) (1.5 0) (-0.5 0)); }
+    block { material rock; polygon ((0 1) (1 1) (1 2) (0 2)); }
+""", """\
+    fixed       { type box; min (-1 -0.500001); max (2 -0.499999); }
+""", """\
+    type        structured;
+    cellSize    0.25;
+""")
+    D(c, """\
+    fixed       { type fixedValue; value uniform (0 0 0); }
+""")
+    scripts(c, "checkBouncingBlock.py")
+    readme(c, """\
+# bouncingBlock/%s: a block dropped onto a fixed base
+
+A 1 x 1 block falls from rest from h0 = 1 (the gap between its bottom and
+the base's top face) onto a 2 x 0.5 base fixed at its bottom; g = 9.81,
+frictionless contact. E = 1e9, nu = 0.25, rho = 2000, plane strain;
+normalPenalty 5e6 N/m per contact point, so that the blocks are rigid
+next to the springs and the impact is that of a mass m = 2000 on the
+parallel springs of the n closed contact points: omega = sqrt(n kN/m).
+deltaT 1e-3 s, 1900 steps (two bounces), frames every 5e-3 s;
+maxDisplacementRatio 0.05 (search distance 0.156 m; the impact's
+penetration v/omega must stay below 0.4 of it).
+
+%s
+
+Check (`tests/verification/checkBouncingBlock.py <case> %s`): the rebound
+heights (largest height of the block's bottom between impacts, from its
+mean D_y) and the number n of closed contacts at the deepest
+penetration (contacts_<index>.vtp), for omega dt.
+""" % (scheme, "Trapezoidal rule (Newmark beta = 1/4, gamma = 1/2): no "
+       "numerical damping; each rebound must reach h0 within 3% and lose "
+       "less than 1% of the energy per bounce (rebound height over the "
+       "previous one)." if trapezoidal else
+       "DDA (Newmark beta = 1/2, gamma = 1, velocityRatio 1): numerically "
+       "damped; the restitution (rebound over drop height) is reported "
+       "against omega dt; it must be finite and below 1.", scheme))
+
+
 if __name__ == "__main__":
     cantilever()
     plateHole()
@@ -632,3 +695,5 @@ if __name__ == "__main__":
         sneddon(angle)
     for phi in (0, 10, 20, 29, 31):
         incline(phi)
+    for scheme in ("trapezoidal", "DDA"):
+        bouncingBlock(scheme)

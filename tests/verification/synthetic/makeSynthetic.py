@@ -8,7 +8,8 @@ Usage:
     makeSynthetic.py <case> <outDir> [--tamper] [--level k]
 
 case: cantilever | plateHole | lame | sneddon | freeFall | waveBar |
-      incline (phi 20) | inclineStatic (phi 31)
+      incline (phi 20) | inclineStatic (phi 31) | bouncingBlock |
+      bouncingBlockDDA
 Writes <outDir>/VTK/<name>_<index>.vtu and <outDir>/VTK/<name>.vtu.series
 (name = the folder name of outDir) in the solver's layout: polygons in the
 deformed position, point and cell data D, U (3 components), sigma (6: xx yy
@@ -23,6 +24,8 @@ closedForms.py at the points (point data) and at the element centroids
     waveBar     c x 0.95
     incline     slider displacement x 1.02
     inclineStatic  slider creeping 0.02 m in 1 s
+    bouncingBlock  restitution 0.97 instead of 1
+    bouncingBlockDDA  restitution 1.02 (an energy gain) instead of 0.8
 --level k (cantilever only) writes refinement level k, for the rates.
 
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -320,9 +323,50 @@ def inclineStatic(out, tamper):
                 lambda t: ((0.02*t if tamper else 1e-4*t), -1e-6))
 
 
+def bouncingBlockDY(t, e, omega=150.0):
+    """Height change of a block dropped from h0 that hits a linear spring
+    (omega) and leaves it with e times its impact speed: free flight, then
+    half a sine under the base, then flight again."""
+    c = cf.bouncingBlock
+    t0 = 0.0            # start of the current flight
+    y0 = 0.0            # D_y at its start
+    v0 = 0.0            # velocity at its start
+    while True:
+        # flight: y = y0 + v0 s - g s^2/2 until y = -h0 (falling)
+        disc = v0*v0 + 2*c.g*(y0 + c.h0)
+        s1 = (v0 + np.sqrt(disc))/c.g
+        if t <= t0 + s1:
+            s = t - t0
+            return y0 + v0*s - 0.5*c.g*s*s
+        v = np.sqrt(disc)
+        tc = t0 + s1
+        if t <= tc + np.pi/omega:
+            return -c.h0 - v/omega*np.sin(omega*(t - tc))
+        t0, y0, v0 = tc + np.pi/omega, -c.h0, e*v
+
+
+def bouncingBlock(out, tamper, e=1.0):
+    """The tutorial's blocks (base 2 x 0.5, block 1 x 1 at h0 = 1 above it):
+    an elastic bounce (restitution 1), or 0.97 when tampered."""
+    X, cells, ids = twoBlocks(((-0.5, -0.5), (1.5, 0)), ((0, 1), (1, 2)))
+    ee = 0.97 if tamper else e
+    times = [0.005*i for i in range(381)]
+    rigidMotion(out, X, cells, ids, times, lambda t: (0.0, bouncingBlockDY(t, ee)))
+
+
+def bouncingBlockDDA(out, tamper):
+    """Damped bounces (restitution 0.8), or a rebound above the drop height
+    (1.02) when tampered."""
+    X, cells, ids = twoBlocks(((-0.5, -0.5), (1.5, 0)), ((0, 1), (1, 2)))
+    times = [0.005*i for i in range(381)]
+    e = 1.02 if tamper else 0.8
+    rigidMotion(out, X, cells, ids, times, lambda t: (0.0, bouncingBlockDY(t, e)))
+
+
 CASES = {"cantilever": cantilever, "plateHole": plateHole, "lame": lame,
          "sneddon": sneddon, "freeFall": freeFall, "waveBar": waveBar,
-         "incline": incline, "inclineStatic": inclineStatic}
+         "incline": incline, "inclineStatic": inclineStatic,
+         "bouncingBlock": bouncingBlock, "bouncingBlockDDA": bouncingBlockDDA}
 
 
 def main(argv):
