@@ -312,3 +312,38 @@ class bouncingBlock:
     @classmethod
     def omega(cls, nContacts):
         return math.sqrt(nContacts*cls.normalPenalty/cls.mass())
+
+
+# --------------------------------------------------------------------------
+# Block bonded to a fixed base (cohesion c, friction phi over the length L),
+# pushed horizontally by F(t) = rate t; weight W = m g. The bond breaks at
+# F = c L + W tan phi; then m x'' = F - W tan phi.
+# --------------------------------------------------------------------------
+class pushedBlock:
+    L = 1.0
+    W = 1.0
+    m = 1.0
+    c = 0.1
+    phi = 30.0
+    rate = 1.0          # N/m per s
+    deltaT = 0.01
+
+    @classmethod
+    def onsetForce(cls):
+        return cls.c*cls.L + cls.W*math.tan(math.radians(cls.phi))
+
+    @classmethod
+    def onsetTime(cls):
+        return cls.onsetForce()/cls.rate
+
+    @classmethod
+    def loadIncrement(cls):
+        return cls.rate*cls.deltaT
+
+    @classmethod
+    def displacement(cls, t, t0=None):
+        """x(t) after the onset at t0 (from rest): m x'' = rate t - W tan phi."""
+        t0 = cls.onsetTime() if t0 is None else t0
+        s = max(t - t0, 0.0)
+        f0 = cls.rate*t0 - cls.W*math.tan(math.radians(cls.phi))
+        return (cls.rate*s**3/6 + f0*s*s/2)/cls.m

@@ -216,7 +216,8 @@ CHECKERS = {"cantilever": ("checkCantilever.py", []),
             "incline": ("checkIncline.py", ["20"]),
             "inclineStatic": ("checkIncline.py", ["31"]),
             "bouncingBlock": ("checkBouncingBlock.py", ["trapezoidal"]),
-            "bouncingBlockDDA": ("checkBouncingBlock.py", ["DDA"])}
+            "bouncingBlockDDA": ("checkBouncingBlock.py", ["DDA"]),
+            "pushedBlock": ("checkPushedBlock.py", [])}
 
 
 def checker(case, workDir):

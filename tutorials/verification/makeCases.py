@@ -684,6 +684,85 @@ penetration (contacts_<index>.vtp), for omega dt.
        "against omega dt; it must be finite and below 1.", scheme))
 
 
+def pushedBlock():
+    """A 1 x 1 block bonded to a base fixed at its bottom, pushed on its
+    left side by a traction ramped linearly in time."""
+    c = "contact/pushedBlock"
+    dynamicControlDict(c, 1, 0.01, 0.01,
+                       "100 steps of 0.01 s (load increments of 0.01 N/m), every step written")
+    contactSolution(
+        c, DDA,
+        contact="    normalPenalty           1e3;\n",
+        comment="// DDA (Newmark beta = 1/2, gamma = 1): the push is quasi-static\n"
+        "// until the bond breaks. Contact springs 1e3 N/m per contact point,\n"
+        "// softer than the blocks (E = 1e4), so that the blocks move rigidly\n"
+        "// on them and share the load evenly\n")
+    write(c, "constant/mechanicalProperties", "constant", "mechanicalProperties", """\
+// Units: m, kg, s; rho = 1 and g = 1 make the weight per unit thickness
+// W = 1 N/m and the mass m = 1 kg/m
+planeStress     no;
+
+thickness       1;
+
+materials
+{
+    rock { type linearElastic; E 1e4; nu 0.25; rho 1; }
+}
+""")
+    gravity(c, 0, -1, "// g = 1: W = rho g L^2 = 1 N/m\n")
+    contactLaw(c, 30, cohesion=0.1, tensileStrength=1, initialState="bonded",
+               comment="// Bonded at the start: c = 0.1 Pa, phi = 30 degrees; the\n"
+               "// tensile strength only keeps the bond from failing in tension\n")
+    meshDict(c, """\
+    base  { material rock; polygon ((-0.5 -0.5) (2.5 -0.5) (2.5 0) (-0.5 0)); }
+    block { material rock; polygon ((0 0) (1 0) (1 1) (0 1)); }
+""", """\
+    fixed       { type box; min (-1 -0.500001); max (3 -0.499999); }
+    push        { type box; min (-1e-6 -1e-6); max (1e-6 1.000001); }
+""", """\
+    type        structured;
+    cellSize    0.25;
+""")
+    D(c, """\
+    fixed       { type fixedValue; value uniform (0 0 0); }
+    // F(t) = t [N/m] in +x, distributed as F (4 - 6 y) over 0 <= y <= 1:
+    // resultant F, no moment about the interface y = 0, so that the
+    // normal stress on the bond stays uniform (W/L)
+    push
+    {
+        type        tractionDisplacement;
+        traction    expression "vector(t*(4 - 6*y), 0, 0)";
+        pressure    uniform 0;
+    }
+""")
+    scripts(c, "checkPushedBlock.py")
+    readme(c, """\
+# pushedBlock: a bonded block pushed horizontally
+
+A 1 x 1 block bonded (Mohr-Coulomb, `initialState bonded`) to a 3 x 0.5
+base fixed at its bottom, pushed on its left side by F(t) = t N/m per unit
+thickness. Units m, kg, s with rho = 1 and g = 1: W = 1 N/m, m = 1 kg/m.
+c = 0.1 Pa, phi = 30 degrees, contact length L = 1. The bond breaks in
+shear at
+
+    F = c L + W tan phi = 0.6774 N/m,
+
+and the block then slides (cohesion lost for good) with
+a = (F - W tan phi)/m. The push is distributed as F (4 - 6 y) over the
+side so that it has no moment about the interface: the normal stress on
+the bond stays uniform. E = 1e4, nu = 0.25, plane strain;
+normalPenalty 1e3 N/m per contact point (softer than the blocks). DDA,
+deltaT 0.01 s (load increments of 0.01 N/m), every step written.
+
+Check (`tests/verification/checkPushedBlock.py <case>`): the onset of
+sliding, the load of the first frame in which no contact of the block is
+bonded any more (contactState of contacts_<index>.vtp: 0 open, 1 bonded,
+2 sliding), within one load increment of c L + W tan phi. The first
+sliding contact and the displacement after the onset against the closed
+form are reported.
+""")
+
+
 if __name__ == "__main__":
     cantilever()
     plateHole()
@@ -697,3 +776,4 @@ if __name__ == "__main__":
         incline(phi)
     for scheme in ("trapezoidal", "DDA"):
         bouncingBlock(scheme)
+    pushedBlock()

@@ -9,7 +9,7 @@ Usage:
 
 case: cantilever | plateHole | lame | sneddon | freeFall | waveBar |
       incline (phi 20) | inclineStatic (phi 31) | bouncingBlock |
-      bouncingBlockDDA
+      bouncingBlockDDA | pushedBlock
 Writes <outDir>/VTK/<name>_<index>.vtu and <outDir>/VTK/<name>.vtu.series
 (name = the folder name of outDir) in the solver's layout: polygons in the
 deformed position, point and cell data D, U (3 components), sigma (6: xx yy
@@ -26,6 +26,7 @@ closedForms.py at the points (point data) and at the element centroids
     inclineStatic  slider creeping 0.02 m in 1 s
     bouncingBlock  restitution 0.97 instead of 1
     bouncingBlockDDA  restitution 1.02 (an energy gain) instead of 0.8
+    pushedBlock    the bond breaks at F = 0.60 instead of 0.6774
 --level k (cantilever only) writes refinement level k, for the rates.
 
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -363,10 +364,48 @@ def bouncingBlockDDA(out, tamper):
     rigidMotion(out, X, cells, ids, times, lambda t: (0.0, bouncingBlockDY(t, e)))
 
 
+def writeContacts(path, points, state):
+    """A contacts_<i>.vtp as the solver writes it (points, contactState)."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    poly = vtkPolyData()
+    pts = vtkPoints()
+    pts.SetDataTypeToDouble()
+    pts.SetData(numpy_to_vtk(np.column_stack([points, np.zeros(len(points))]), deep=1))
+    poly.SetPoints(pts)
+    a = numpy_to_vtk(np.asarray(state, dtype=np.int32), deep=1)
+    a.SetName("contactState")
+    poly.GetPointData().AddArray(a)
+    w = vtkXMLPolyDataWriter()
+    w.SetFileName(str(path))
+    w.SetInputData(poly)
+    if w.Write() != 1:
+        raise SystemExit("could not write %s" % path)
+
+
+def pushedBlock(out, tamper):
+    """Five contacts on the interface, bonded until the closed-form onset
+    (F = 0.6774, rounded up to the next step), sliding after it, the block
+    moving by the closed form; tampered, the bond breaks at F = 0.60."""
+    c = cf.pushedBlock
+    X, cells, ids = twoBlocks(((-0.5, -0.5), (2.5, 0)), ((0, 0), (1, 1)))
+    t0 = 0.60 if tamper else c.onsetTime()
+    times = [c.deltaT*i for i in range(101)]
+    rigidMotion(out, X, cells, ids, times,
+                lambda t: (c.displacement(t, t0), 0.0))
+    cp = np.column_stack([np.linspace(0, 1, 5), np.zeros(5)])
+    for i, t in enumerate(times):
+        state = 2 if t >= t0 else 1
+        writeContacts(Path(out)/"VTK"/("contacts_%d.vtp" % i), cp, [state]*5)
+
+
 CASES = {"cantilever": cantilever, "plateHole": plateHole, "lame": lame,
          "sneddon": sneddon, "freeFall": freeFall, "waveBar": waveBar,
          "incline": incline, "inclineStatic": inclineStatic,
-         "bouncingBlock": bouncingBlock, "bouncingBlockDDA": bouncingBlockDDA}
+         "bouncingBlock": bouncingBlock, "bouncingBlockDDA": bouncingBlockDDA,
+         "pushedBlock": pushedBlock}
 
 
 def main(argv):
