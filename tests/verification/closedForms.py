@@ -238,3 +238,112 @@ class waveBar:
     @classmethod
     def velocityX(cls, x, t):
         return np.where(cls.c()*t > x, cls.p0*cls.c()/cls.E, 0.0)
+
+
+# --------------------------------------------------------------------------
+# Contact cases (docs/verification.md, Contact)
+# --------------------------------------------------------------------------
+def searchDistance(halfSize, maxDisplacementRatio=0.005):
+    """The solver's automatic contact search distance (nmmSolidModel::
+    createContacts): 2.5 maxDisplacementRatio half the larger side of the
+    model's bounding box."""
+    return 2.5*maxDisplacementRatio*halfSize
+
+
+def allowedPenetration(halfSize, maxDisplacementRatio=0.005):
+    """The largest penetration a step may end with: 0.4 search distance."""
+    return 0.4*searchDistance(halfSize, maxDisplacementRatio)
+
+
+# --------------------------------------------------------------------------
+# Block on an incline at a to the horizontal, dry friction phi, from rest:
+# d(t) = g (sin a - cos a tan phi) t^2/2 while tan phi < tan a, else 0.
+# --------------------------------------------------------------------------
+class incline:
+    a = 30.0            # degrees
+    g = 9.81
+    phis = (0, 10, 20, 29, 31)
+    maxDisplacementRatio = 0.005
+
+    @classmethod
+    def slides(cls, phi):
+        return math.tan(math.radians(phi)) < math.tan(math.radians(cls.a))
+
+    @classmethod
+    def acceleration(cls, phi):
+        if not cls.slides(phi):
+            return 0.0
+        a = math.radians(cls.a)
+        return cls.g*(math.sin(a) - math.cos(a)*math.tan(math.radians(phi)))
+
+    @classmethod
+    def displacement(cls, phi, t):
+        return 0.5*cls.acceleration(phi)*t*t
+
+
+# --------------------------------------------------------------------------
+# Bouncing block: a rigid 1 x 1 block dropped from h0 onto a fixed base
+# through frictionless penalty springs (kN per closed contact point, all in
+# parallel for a vertical impact): omega = sqrt(n kN/m). Elastic contact
+# conserves energy, so every rebound reaches h0 (trapezoidal rule).
+# --------------------------------------------------------------------------
+class bouncingBlock:
+    h0 = 1.0
+    g = 9.81
+    rho = 2000.0
+    area = 1.0
+    normalPenalty = 5e6
+    deltaT = 1e-3
+    trapezoidalTolerance = 0.03     # rebound height / h0
+    energyDriftPerBounce = 0.01
+
+    @classmethod
+    def mass(cls):
+        return cls.rho*cls.area
+
+    @classmethod
+    def impactSpeed(cls):
+        return math.sqrt(2*cls.g*cls.h0)
+
+    @classmethod
+    def impactTime(cls):
+        return math.sqrt(2*cls.h0/cls.g)
+
+    @classmethod
+    def omega(cls, nContacts):
+        return math.sqrt(nContacts*cls.normalPenalty/cls.mass())
+
+
+# --------------------------------------------------------------------------
+# Block bonded to a fixed base (cohesion c, friction phi over the length L),
+# pushed horizontally by F(t) = rate t; weight W = m g. The bond breaks at
+# F = c L + W tan phi; then m x'' = F - W tan phi.
+# --------------------------------------------------------------------------
+class pushedBlock:
+    L = 1.0
+    W = 1.0
+    m = 1.0
+    c = 0.1
+    phi = 30.0
+    rate = 1.0          # N/m per s
+    deltaT = 0.01
+
+    @classmethod
+    def onsetForce(cls):
+        return cls.c*cls.L + cls.W*math.tan(math.radians(cls.phi))
+
+    @classmethod
+    def onsetTime(cls):
+        return cls.onsetForce()/cls.rate
+
+    @classmethod
+    def loadIncrement(cls):
+        return cls.rate*cls.deltaT
+
+    @classmethod
+    def displacement(cls, t, t0=None):
+        """x(t) after the onset at t0 (from rest): m x'' = rate t - W tan phi."""
+        t0 = cls.onsetTime() if t0 is None else t0
+        s = max(t - t0, 0.0)
+        f0 = cls.rate*t0 - cls.W*math.tan(math.radians(cls.phi))
+        return (cls.rate*s**3/6 + f0*s*s/2)/cls.m

@@ -138,6 +138,17 @@ def closedForms():
     expect(abs(w.c() - 1000) < 1e-9 and abs(w.arrivalTime() - 5e-3) < 1e-15,
            "waveBar: c = 1000 m/s, arrival at x = 5 at 5e-3 s")
 
+    i = cf.incline
+    expect(abs(i.displacement(20, 1.0) - 0.9064) < 5e-5,
+           "incline: d(1 s) = 0.9064 m at phi = 20 (%.6g)" % i.displacement(20, 1.0))
+    expect(abs(i.displacement(0, 1.0) - 9.81/4) < 1e-12 and i.displacement(31, 1.0) == 0
+           and i.slides(29), "incline: g sin(a)/2 at phi = 0, static at 31, slides at 29")
+    expect(abs(cf.allowedPenetration(2.0) - 0.01) < 1e-15,
+           "incline: allowed penetration 0.01 m (half size 2)")
+    pb = cf.pushedBlock
+    expect(abs(pb.onsetForce() - 0.67735) < 1e-5,
+           "pushedBlock: onset at c L + W tan phi = 0.6774 (%.6g)" % pb.onsetForce())
+
 
 # --------------------------------------------------------------------------
 EVAL_NAMES = {
@@ -212,7 +223,12 @@ CHECKERS = {"cantilever": ("checkCantilever.py", []),
             "lame": ("checkLame.py", []),
             "sneddon": ("checkSneddon.py", ["30"]),
             "freeFall": ("checkFreeFall.py", []),
-            "waveBar": ("checkWaveBar.py", [])}
+            "waveBar": ("checkWaveBar.py", []),
+            "incline": ("checkIncline.py", ["20"]),
+            "inclineStatic": ("checkIncline.py", ["31"]),
+            "bouncingBlock": ("checkBouncingBlock.py", ["trapezoidal"]),
+            "bouncingBlockDDA": ("checkBouncingBlock.py", ["DDA"]),
+            "pushedBlock": ("checkPushedBlock.py", [])}
 
 
 def checker(case, workDir):

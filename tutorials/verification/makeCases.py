@@ -5,7 +5,10 @@ Usage (from anywhere; plain python3, standard library only):
     tutorials/verification/makeCases.py
 
 Writes system/, constant/ and 0/ of cantilever, plateHole, plateHoleFoam,
-lame, freeFall, waveBar and sneddon/angle{0,30,45}. The files it writes
+lame, freeFall, waveBar and sneddon/angle{0,30,45}; and the whole of the
+contact cases (docs/verification.md, Contact) under contact/:
+incline/phi{0,10,20,29,31}, pushedBlock, bouncingBlock/{trapezoidal,DDA}
+(their Allrun, Allclean and README.md too). The files it writes
 are committed, so running it is only needed after changing a parameter
 here; the README of each case explains the choices. The polygons of the
 curved boundaries are written out in full (64 chords per quarter circle,
@@ -444,6 +447,322 @@ def plateHoleFoam():
 """)
 
 
+# --------------------------------------------------------------------------
+# Contact cases (docs/verification.md, Contact). Each is a whole tutorial:
+# the dictionaries, Allrun, Allclean and a README.md.
+
+def scripts(case, checker):
+    """Allrun and Allclean of a case under contact/ (depth from the
+    project folder taken from the case path)."""
+    up = "/".join([".."]*(len(Path(case).parts) + 2))
+    for name, tools, body in (
+            ("Allrun", "RunFunctions", """\
+# Covers and manifold elements (constant/nmmMesh, VTK/mesh.vtu), then the
+# solver (VTK/<case>_<index>.vtu, VTK/<case>.vtu.series, contacts_<index>.vtp).
+# Compare with the closed form: tests/verification/%s (see README.md).
+runApplication nmmMesh || exit 1
+runApplication $(getApplication) || exit 1
+""" % checker),
+            ("Allclean", "CleanFunctions", "cleanCase\n")):
+        path = HERE/case/name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text("""\
+#!/bin/bash
+cd "${0%%/*}" || exit                                # Run from this directory
+. ${NMM_PROJECT_DIR:-$(cd %s && pwd)}/bin/tools/%s
+#------------------------------------------------------------------------------
+
+%s
+#------------------------------------------------------------------------------
+""" % (up, tools, body))
+        path.chmod(0o755)
+
+
+def readme(case, text):
+    (HERE/case).mkdir(parents=True, exist_ok=True)
+    (HERE/case/"README.md").write_text(text)
+
+
+def dynamicControlDict(case, endTime, deltaT, writeInterval, comment,
+                       adjust=False):
+    write(case, "system/controlDict", "system", "controlDict", """\
+// %s
+application     nmmSolidFoam;
+
+startFrom       startTime;
+
+startTime       0;
+
+stopAt          endTime;
+
+endTime         %s;
+
+deltaT          %s;
+
+writeControl    adjustableRunTime;
+
+writeInterval   %s;
+
+purgeWrite      0;
+
+writeFormat     binary;         // VTK frames exact and compact
+
+writePrecision  12;
+
+timeFormat      general;
+
+timePrecision   8;
+
+runTimeModifiable yes;
+
+adjustTimeStep  %s;
+
+functions
+{
+}
+""" % (comment, endTime, deltaT, writeInterval, "yes" if adjust else "no"))
+
+
+def gravity(case, gx, gy, comment=""):
+    write(case, "constant/g", "constant", "g", comment + """\
+dimensions      [0 1 -2 0 0 0 0];
+
+value           (%s %s 0);
+""" % (fmt(gx), fmt(gy)), cls="uniformDimensionedVectorField")
+
+
+def contactLaw(case, frictionAngle, cohesion=0, tensileStrength=0,
+               initialState="open", comment=""):
+    write(case, "constant/contactProperties", "constant", "contactProperties",
+          comment + """\
+default
+{
+    law             mohrCoulomb;
+    frictionAngle   %s;         // degrees
+    cohesion        %s;          // [Pa]
+    tensileStrength %s;          // [Pa]
+    initialState    %s;
+}
+""" % (fmt(frictionAngle), fmt(cohesion), fmt(tensileStrength), initialState))
+
+
+def contactSolution(case, scheme, contact="", stepControl="", comment=""):
+    write(case, "system/nmmSolution", "system", "nmmSolution", comment + """\
+analysis        dynamic;
+
+timeScheme      %s
+
+contact
+{
+    method                  penalty;
+%s}
+
+stepControl
+{
+%s}
+
+linearSolver    { type cholmod; }
+""" % (scheme, contact, stepControl))
+
+
+DDA = "{ type DDA; velocityRatio 1; }"
+TRAPEZOIDAL = "{ type Newmark; beta 0.25; gamma 0.5; }"
+
+
+def incline(phiDeg):
+    """A 1 x 1 block on a 4 x 0.5 base fixed at its bottom; the slope is
+    made by tilting gravity by a = 30 degrees, not the geometry."""
+    c = "contact/incline/phi%d" % phiDeg
+    a = math.radians(30.0)
+    dynamicControlDict(c, 1, 0.01, 0.1, "100 steps of 0.01 s, written every 0.1 s")
+    contactSolution(c, DDA, stepControl="    maxDisplacementRatio    0.005;\n",
+                    comment="// DDA (Newmark beta = 1/2, gamma = 1): exact for constant\n"
+                    "// accelerations; automatic penalties (50 E normal)\n")
+    mechanicalProperties(c, False, "rock", "1e9", "0.25", "2000")
+    gravity(c, 9.81*math.sin(a), -9.81*math.cos(a),
+            "// |g| = 9.81 at a = 30 degrees to -y: the base is the incline\n")
+    contactLaw(c, phiDeg, comment="// Dry friction only: phi = %d degrees (tan a = %.4f, tan phi = %.4f)\n"
+               % (phiDeg, math.tan(a), math.tan(math.radians(phiDeg))))
+    meshDict(c, """\
+    base   { material rock; polygon ((0 -0.5) (4 -0.5) (4 0) (0 0)); }
+    slider { material rock; polygon ((0.25 0) (1.25 0) (1.25 1) (0.25 1)); }
+""", """\
+    fixed       { type box; min (-1 -0.500001); max (5 -0.499999); }
+""", """\
+    type        structured;
+    cellSize    0.25;
+""")
+    D(c, """\
+    fixed       { type fixedValue; value uniform (0 0 0); }
+""")
+    scripts(c, "checkIncline.py")
+    readme(c, """\
+# incline/phi%d: a block sliding (or not) on an incline
+
+Dry (Mohr-Coulomb, no cohesion) friction at phi = %d degrees on a slope of
+a = 30 degrees. The slope is made by tilting gravity: g = 9.81 (sin a,
+-cos a), so that the base's top face is the incline and the slider moves
+along x. From rest,
+
+    d(t) = g (sin a - cos a tan phi) t^2/2   if tan phi < tan a,
+    d(t) = 0                                  otherwise.
+
+Base 4 x 0.5 (bottom edge fixed), slider 1 x 1 resting on it at
+x = 0.25..1.25; E = 1e9, nu = 0.25, rho = 2000, plane strain; automatic
+penalties (normal 50 E); structured cover, cellSize 0.25. DDA
+(`velocityRatio 1`), deltaT 0.01 s, 100 steps, frames every 0.1 s.
+
+Check (`tests/verification/checkIncline.py <case> %d`): the mean x
+displacement of the slider's elements in the last frame (t about 1 s,
+compared at the frame's own time) within 1%% of d(t); when the block
+sticks (phi >= a), its drift below the allowed penetration, 0.4 times
+the search distance (2.5 maxDisplacementRatio half the larger side of
+the model's bounding box: 0.01 m here).
+""" % (phiDeg, phiDeg, phiDeg))
+
+
+def bouncingBlock(scheme):
+    """A 1 x 1 block dropped from h0 = 1 onto a base fixed at its bottom.
+    The contact spring is much softer than the blocks (normalPenalty 5e6
+    against E = 1e9), so that the blocks stay rigid and the impact is
+    that of a mass on a spring: with the trapezoidal rule it rebounds to
+    h0; DDA damps it (restitution reported against omega dt)."""
+    c = "contact/bouncingBlock/%s" % scheme
+    trapezoidal = scheme == "trapezoidal"
+    dynamicControlDict(c, 1.9, 1e-3, 0.005,
+                       "1900 steps of 1e-3 s (two bounces), written every 5e-3 s")
+    contactSolution(
+        c, TRAPEZOIDAL if trapezoidal else DDA,
+        contact="    normalPenalty           5e6;\n",
+        stepControl="    maxDisplacementRatio    0.05;\n",
+        comment=("// Trapezoidal rule: no numerical damping\n" if trapezoidal else
+                 "// DDA (Newmark beta = 1/2, gamma = 1): numerically damped\n")
+        + "// Contact springs 5e6 N/m per contact point, far softer than the\n"
+        "// blocks; maxDisplacementRatio 0.05 gives a search distance of\n"
+        "// 0.156 m, so that the impact's penetration (v/omega) is allowed\n")
+    mechanicalProperties(c, False, "rock", "1e9", "0.25", "2000")
+    gravity(c, 0, -9.81)
+    contactLaw(c, 0, comment="// Frictionless: the block only bounces\n")
+    meshDict(c, """\
+    base  { material rock; polygon ((-0.5 -0.5) (1.5 -0.5) (1.5 0) (-0.5 0)); }
+    block { material rock; polygon ((0 1) (1 1) (1 2) (0 2)); }
+""", """\
+    fixed       { type box; min (-1 -0.500001); max (2 -0.499999); }
+""", """\
+    type        structured;
+    cellSize    0.25;
+""")
+    D(c, """\
+    fixed       { type fixedValue; value uniform (0 0 0); }
+""")
+    scripts(c, "checkBouncingBlock.py")
+    readme(c, """\
+# bouncingBlock/%s: a block dropped onto a fixed base
+
+A 1 x 1 block falls from rest from h0 = 1 (the gap between its bottom and
+the base's top face) onto a 2 x 0.5 base fixed at its bottom; g = 9.81,
+frictionless contact. E = 1e9, nu = 0.25, rho = 2000, plane strain;
+normalPenalty 5e6 N/m per contact point, so that the blocks are rigid
+next to the springs and the impact is that of a mass m = 2000 on the
+parallel springs of the n closed contact points: omega = sqrt(n kN/m).
+deltaT 1e-3 s, 1900 steps (two bounces), frames every 5e-3 s;
+maxDisplacementRatio 0.05 (search distance 0.156 m; the impact's
+penetration v/omega must stay below 0.4 of it).
+
+%s
+
+Check (`tests/verification/checkBouncingBlock.py <case> %s`): the rebound
+heights (largest height of the block's bottom between impacts, from its
+mean D_y) and the number n of closed contacts at the deepest
+penetration (contacts_<index>.vtp), for omega dt.
+""" % (scheme, "Trapezoidal rule (Newmark beta = 1/4, gamma = 1/2): no "
+       "numerical damping; each rebound must reach h0 within 3% and lose "
+       "less than 1% of the energy per bounce (rebound height over the "
+       "previous one)." if trapezoidal else
+       "DDA (Newmark beta = 1/2, gamma = 1, velocityRatio 1): numerically "
+       "damped; the restitution (rebound over drop height) is reported "
+       "against omega dt; it must be finite and below 1.", scheme))
+
+
+def pushedBlock():
+    """A 1 x 1 block bonded to a base fixed at its bottom, pushed on its
+    left side by a traction ramped linearly in time."""
+    c = "contact/pushedBlock"
+    dynamicControlDict(c, 1, 0.01, 0.01,
+                       "100 steps of 0.01 s (load increments of 0.01 N/m), every step written")
+    contactSolution(
+        c, DDA,
+        contact="    normalPenalty           1e3;\n",
+        comment="// DDA (Newmark beta = 1/2, gamma = 1): the push is quasi-static\n"
+        "// until the bond breaks. Contact springs 1e3 N/m per contact point,\n"
+        "// softer than the blocks (E = 1e4), so that the blocks move rigidly\n"
+        "// on them and share the load evenly\n")
+    write(c, "constant/mechanicalProperties", "constant", "mechanicalProperties", """\
+// Units: m, kg, s; rho = 1 and g = 1 make the weight per unit thickness
+// W = 1 N/m and the mass m = 1 kg/m
+planeStress     no;
+
+thickness       1;
+
+materials
+{
+    rock { type linearElastic; E 1e4; nu 0.25; rho 1; }
+}
+""")
+    gravity(c, 0, -1, "// g = 1: W = rho g L^2 = 1 N/m\n")
+    contactLaw(c, 30, cohesion=0.1, tensileStrength=1, initialState="bonded",
+               comment="// Bonded at the start: c = 0.1 Pa, phi = 30 degrees; the\n"
+               "// tensile strength only keeps the bond from failing in tension\n")
+    meshDict(c, """\
+    base  { material rock; polygon ((-0.5 -0.5) (2.5 -0.5) (2.5 0) (-0.5 0)); }
+    block { material rock; polygon ((0 0) (1 0) (1 1) (0 1)); }
+""", """\
+    fixed       { type box; min (-1 -0.500001); max (3 -0.499999); }
+    push        { type box; min (-1e-6 -1e-6); max (1e-6 1.000001); }
+""", """\
+    type        structured;
+    cellSize    0.25;
+""")
+    D(c, """\
+    fixed       { type fixedValue; value uniform (0 0 0); }
+    // F(t) = t [N/m] in +x, distributed as F (4 - 6 y) over 0 <= y <= 1:
+    // resultant F, no moment about the interface y = 0, so that the
+    // normal stress on the bond stays uniform (W/L)
+    push
+    {
+        type        tractionDisplacement;
+        traction    expression "vector(t*(4 - 6*y), 0, 0)";
+        pressure    uniform 0;
+    }
+""")
+    scripts(c, "checkPushedBlock.py")
+    readme(c, """\
+# pushedBlock: a bonded block pushed horizontally
+
+A 1 x 1 block bonded (Mohr-Coulomb, `initialState bonded`) to a 3 x 0.5
+base fixed at its bottom, pushed on its left side by F(t) = t N/m per unit
+thickness. Units m, kg, s with rho = 1 and g = 1: W = 1 N/m, m = 1 kg/m.
+c = 0.1 Pa, phi = 30 degrees, contact length L = 1. The bond breaks in
+shear at
+
+    F = c L + W tan phi = 0.6774 N/m,
+
+and the block then slides (cohesion lost for good) with
+a = (F - W tan phi)/m. The push is distributed as F (4 - 6 y) over the
+side so that it has no moment about the interface: the normal stress on
+the bond stays uniform. E = 1e4, nu = 0.25, plane strain;
+normalPenalty 1e3 N/m per contact point (softer than the blocks). DDA,
+deltaT 0.01 s (load increments of 0.01 N/m), every step written.
+
+Check (`tests/verification/checkPushedBlock.py <case>`): the onset of
+sliding, the load of the first frame in which no contact of the block is
+bonded any more (contactState of contacts_<index>.vtp: 0 open, 1 bonded,
+2 sliding), within one load increment of c L + W tan phi. The first
+sliding contact and the displacement after the onset against the closed
+form are reported.
+""")
+
+
 if __name__ == "__main__":
     cantilever()
     plateHole()
@@ -453,3 +772,8 @@ if __name__ == "__main__":
     waveBar()
     for angle in (0, 30, 45):
         sneddon(angle)
+    for phi in (0, 10, 20, 29, 31):
+        incline(phi)
+    for scheme in ("trapezoidal", "DDA"):
+        bouncingBlock(scheme)
+    pushedBlock()

@@ -7,7 +7,9 @@ fails on wrong data.
 Usage:
     makeSynthetic.py <case> <outDir> [--tamper] [--level k]
 
-case: cantilever | plateHole | lame | sneddon | freeFall | waveBar
+case: cantilever | plateHole | lame | sneddon | freeFall | waveBar |
+      incline (phi 20) | inclineStatic (phi 31) | bouncingBlock |
+      bouncingBlockDDA | pushedBlock
 Writes <outDir>/VTK/<name>_<index>.vtu and <outDir>/VTK/<name>.vtu.series
 (name = the folder name of outDir) in the solver's layout: polygons in the
 deformed position, point and cell data D, U (3 components), sigma (6: xx yy
@@ -20,6 +22,11 @@ closedForms.py at the points (point data) and at the element centroids
     lame        displacements, stresses x 1.03
     sneddon     crack opening x 0.97          freeFall   one point off by 1e-8
     waveBar     c x 0.95
+    incline     slider displacement x 1.02
+    inclineStatic  slider creeping 0.02 m in 1 s
+    bouncingBlock  restitution 0.97 instead of 1
+    bouncingBlockDDA  restitution 1.02 (an energy gain) instead of 0.8
+    pushedBlock    the bond breaks at F = 0.60 instead of 0.6774
 --level k (cantilever only) writes refinement level k, for the rates.
 
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -68,7 +75,7 @@ def sigma6(sxx, syy, sxy, nu, planeStress):
     return np.column_stack([sxx, syy, szz, sxy, z, z])
 
 
-def writeFrame(path, X, cells, D, U, Sp, Dc, Uc, Sc):
+def writeFrame(path, X, cells, D, U, Sp, Dc, Uc, Sc, blockId=None):
     from vtkmodules.vtkCommonCore import vtkPoints, vtkIdList
     from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid, VTK_POLYGON
     from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
@@ -101,7 +108,8 @@ def writeFrame(path, X, cells, D, U, Sp, Dc, Uc, Sc):
     add(cd, "D", vec3(Dc))
     add(cd, "U", vec3(Uc))
     add(cd, "sigma", Sc)
-    add(cd, "blockId", np.zeros(len(cells), dtype=np.int32))
+    add(cd, "blockId", np.zeros(len(cells), dtype=np.int32) if blockId is None
+        else np.asarray(blockId, dtype=np.int32))
     add(cd, "materialId", np.zeros(len(cells), dtype=np.int32))
     w = vtkXMLUnstructuredGridWriter()
     w.SetFileName(str(path))
@@ -117,9 +125,9 @@ class writer:
         (self.dir/"VTK").mkdir(parents=True, exist_ok=True)
         self.files = []
 
-    def frame(self, index, time, X, cells, D, U, Sp, Dc, Uc, Sc):
+    def frame(self, index, time, X, cells, D, U, Sp, Dc, Uc, Sc, blockId=None):
         fname = "%s_%d.vtu" % (self.name, index)
-        writeFrame(self.dir/"VTK"/fname, X, cells, D, U, Sp, Dc, Uc, Sc)
+        writeFrame(self.dir/"VTK"/fname, X, cells, D, U, Sp, Dc, Uc, Sc, blockId)
         self.files.append({"name": fname, "time": time})
 
     def close(self):
@@ -260,8 +268,144 @@ def waveBar(out, tamper):
     w.close()
 
 
+def twoBlocks(lower, upper, n=4):
+    """Points and triangles of two rectangles ((x0, y0), (x1, y1)), the
+    points of each block its own, and the blockId of each triangle."""
+    X = []
+    cells = []
+    ids = []
+    for b, ((x0, y0), (x1, y1)) in enumerate((lower, upper)):
+        Xb, cb = gridMesh(np.linspace(x0, x1, n + 1), np.linspace(y0, y1, n + 1))
+        off = sum(len(x) for x in X)
+        X.append(Xb)
+        cells += [[p + off for p in c] for c in cb]
+        ids += [b]*len(cb)
+    return np.vstack(X), cells, np.array(ids)
+
+
+def rigidMotion(out, X, cells, ids, times, upperD, upperU=None):
+    """Frames where block 0 stays put and block 1 moves rigidly by
+    upperD(t) (a 2-vector), with velocity upperU(t)."""
+    w = writer(out)
+    z6 = np.zeros((len(X), 6))
+    zc6 = np.zeros((len(cells), 6))
+    pointBlock = np.zeros(len(X), dtype=int)
+    for c, b in zip(cells, ids):
+        pointBlock[c] = b
+    for i, t in enumerate(times):
+        d = np.asarray(upperD(t), dtype=float)
+        u = np.asarray(upperU(t) if upperU else (0.0, 0.0), dtype=float)
+        D = np.where(pointBlock[:, None] == 1, d, 0.0)*np.ones((len(X), 2))
+        U = np.where(pointBlock[:, None] == 1, u, 0.0)*np.ones((len(X), 2))
+        Dc = np.where(ids[:, None] == 1, d, 0.0)*np.ones((len(cells), 2))
+        Uc = np.where(ids[:, None] == 1, u, 0.0)*np.ones((len(cells), 2))
+        w.frame(i, t, X, cells, D, U, z6, Dc, Uc, zc6, blockId=ids)
+    w.close()
+
+
+def incline(out, tamper, phi=20.0):
+    """The tutorial's blocks (base 4 x 0.5, slider 1 x 1); the slider moves
+    by the closed form d(t) (x 1.02 when tampered)."""
+    c = cf.incline
+    X, cells, ids = twoBlocks(((0, -0.5), (4, 0)), ((0.25, 0), (1.25, 1)))
+    s = 1.02 if tamper else 1.0
+    times = [0.1*i + 1e-3*(i == 10) for i in range(11)]
+    rigidMotion(out, X, cells, ids, times,
+                lambda t: (s*c.displacement(phi, t), 0.0))
+
+
+def inclineStatic(out, tamper):
+    """phi = 31: the slider sticks; tampered, it creeps by 0.02 m (twice
+    the allowed penetration) by t = 1."""
+    c = cf.incline
+    X, cells, ids = twoBlocks(((0, -0.5), (4, 0)), ((0.25, 0), (1.25, 1)))
+    times = [0.1*i for i in range(11)]
+    rigidMotion(out, X, cells, ids, times,
+                lambda t: ((0.02*t if tamper else 1e-4*t), -1e-6))
+
+
+def bouncingBlockDY(t, e, omega=150.0):
+    """Height change of a block dropped from h0 that hits a linear spring
+    (omega) and leaves it with e times its impact speed: free flight, then
+    half a sine under the base, then flight again."""
+    c = cf.bouncingBlock
+    t0 = 0.0            # start of the current flight
+    y0 = 0.0            # D_y at its start
+    v0 = 0.0            # velocity at its start
+    while True:
+        # flight: y = y0 + v0 s - g s^2/2 until y = -h0 (falling)
+        disc = v0*v0 + 2*c.g*(y0 + c.h0)
+        s1 = (v0 + np.sqrt(disc))/c.g
+        if t <= t0 + s1:
+            s = t - t0
+            return y0 + v0*s - 0.5*c.g*s*s
+        v = np.sqrt(disc)
+        tc = t0 + s1
+        if t <= tc + np.pi/omega:
+            return -c.h0 - v/omega*np.sin(omega*(t - tc))
+        t0, y0, v0 = tc + np.pi/omega, -c.h0, e*v
+
+
+def bouncingBlock(out, tamper, e=1.0):
+    """The tutorial's blocks (base 2 x 0.5, block 1 x 1 at h0 = 1 above it):
+    an elastic bounce (restitution 1), or 0.97 when tampered."""
+    X, cells, ids = twoBlocks(((-0.5, -0.5), (1.5, 0)), ((0, 1), (1, 2)))
+    ee = 0.97 if tamper else e
+    times = [0.005*i for i in range(381)]
+    rigidMotion(out, X, cells, ids, times, lambda t: (0.0, bouncingBlockDY(t, ee)))
+
+
+def bouncingBlockDDA(out, tamper):
+    """Damped bounces (restitution 0.8), or a rebound above the drop height
+    (1.02) when tampered."""
+    X, cells, ids = twoBlocks(((-0.5, -0.5), (1.5, 0)), ((0, 1), (1, 2)))
+    times = [0.005*i for i in range(381)]
+    e = 1.02 if tamper else 0.8
+    rigidMotion(out, X, cells, ids, times, lambda t: (0.0, bouncingBlockDY(t, e)))
+
+
+def writeContacts(path, points, state):
+    """A contacts_<i>.vtp as the solver writes it (points, contactState)."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    poly = vtkPolyData()
+    pts = vtkPoints()
+    pts.SetDataTypeToDouble()
+    pts.SetData(numpy_to_vtk(np.column_stack([points, np.zeros(len(points))]), deep=1))
+    poly.SetPoints(pts)
+    a = numpy_to_vtk(np.asarray(state, dtype=np.int32), deep=1)
+    a.SetName("contactState")
+    poly.GetPointData().AddArray(a)
+    w = vtkXMLPolyDataWriter()
+    w.SetFileName(str(path))
+    w.SetInputData(poly)
+    if w.Write() != 1:
+        raise SystemExit("could not write %s" % path)
+
+
+def pushedBlock(out, tamper):
+    """Five contacts on the interface, bonded until the closed-form onset
+    (F = 0.6774, rounded up to the next step), sliding after it, the block
+    moving by the closed form; tampered, the bond breaks at F = 0.60."""
+    c = cf.pushedBlock
+    X, cells, ids = twoBlocks(((-0.5, -0.5), (2.5, 0)), ((0, 0), (1, 1)))
+    t0 = 0.60 if tamper else c.onsetTime()
+    times = [c.deltaT*i for i in range(101)]
+    rigidMotion(out, X, cells, ids, times,
+                lambda t: (c.displacement(t, t0), 0.0))
+    cp = np.column_stack([np.linspace(0, 1, 5), np.zeros(5)])
+    for i, t in enumerate(times):
+        state = 2 if t >= t0 else 1
+        writeContacts(Path(out)/"VTK"/("contacts_%d.vtp" % i), cp, [state]*5)
+
+
 CASES = {"cantilever": cantilever, "plateHole": plateHole, "lame": lame,
-         "sneddon": sneddon, "freeFall": freeFall, "waveBar": waveBar}
+         "sneddon": sneddon, "freeFall": freeFall, "waveBar": waveBar,
+         "incline": incline, "inclineStatic": inclineStatic,
+         "bouncingBlock": bouncingBlock, "bouncingBlockDDA": bouncingBlockDDA,
+         "pushedBlock": pushedBlock}
 
 
 def main(argv):
