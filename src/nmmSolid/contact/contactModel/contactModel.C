@@ -136,12 +136,7 @@ void contactModel::beginStep
         a.record.t = c.t;
         a.record.length = c.length;
         a.record.gap = c.gap;
-        // An overlap found at the start of a step (a contact the search
-        // missed before, or one left by a step that pushed bodies
-        // together) is pushed out by at most overlapRelief per step: a
-        // penalty spring would resolve it in one step, and the momentum
-        // that gives would blow the bodies apart
-        a.gap0 = std::max(c.gap, -settings_.overlapRelief);
+        a.gap0 = c.gap;
         a.law = &lawOf(c);
         const contactLoop& el = loops[c.edgeLoop];
         const vec s = tangentOf(el, c.edge);
@@ -194,6 +189,15 @@ void contactModel::carryHistory(const std::vector<contactRecord>& history, bool 
                 && a.law->initialState() == contactState::bonded;
             r.state = touching || a.gap0 < 0 ? contactState::bonded : contactState::open;
             r.bondIntact = cemented && a.law->hasBondStrength();
+        }
+        if (!old || !isClosed(old->state))
+        {
+            // A contact that overlaps without having been closed (the
+            // search missed it) is pushed out by at most overlapRelief per
+            // step: a penalty spring would resolve it in one step, and the
+            // momentum that gives would throw the bodies apart
+            a.relieved = a.gap0 < -settings_.overlapRelief;
+            a.gap0 = std::max(a.gap0, -settings_.overlapRelief);
         }
         a.shearForce0 = isClosed(r.state) ? r.shearForce : 0;
         a.friction = r.state == contactState::sliding ? r.shearForce : 0;
@@ -255,10 +259,14 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
         q.shearDisplacement = r.state == contactState::bonded ? 0 : a.ds;
 
         contactDecision d = a.law->decide(q);
-        if (d.state != r.state && a.changes >= maxChangesPerStep && !d.bondBroken)
+        if
+        (
+            isClosed(d.state) != isClosed(r.state)
+         && a.changes >= maxChangesPerStep && !d.bondBroken
+        )
         {
-            // A contact that keeps changing within the step (stick-slip or
-            // open-close chatter between two solves) keeps the state it has
+            // A contact that keeps opening and closing within the step
+            // (near-zero normal force between two solves) keeps its state
             ++counts.held;
             d.state = r.state;
             d.frictionForce = a.friction;
@@ -274,11 +282,19 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
                      : r.state == contactState::bonded ? q.Fs : 0;
         // Friction needs the normal force of a closed solve: the trial
         // force of an open contact can be any multiple of the real one
-        const double friction = r.state == contactState::open ? 0.0 : d.frictionForce;
-        if (d.state == contactState::sliding && d.state == r.state
-         && std::abs(friction - a.friction) > frictionTolerance*std::abs(friction))
+        double friction = r.state == contactState::open ? 0.0 : d.frictionForce;
+        if (d.state == contactState::sliding && d.state == r.state)
         {
-            ++counts.frictionUpdates;
+            // The lagged update overshoots where friction and normal force
+            // drive each other (a wedged grain): a change that reverses
+            // the last one is halved, which makes the iteration contract
+            const double change = friction - a.friction;
+            if (change*a.frictionChange < 0) friction = a.friction + 0.5*change;
+            a.frictionChange = friction - a.friction;
+            if (std::abs(a.frictionChange) > frictionTolerance*std::abs(friction))
+            {
+                ++counts.frictionUpdates;
+            }
         }
         r.state = d.state;
         r.bondIntact = d.bondIntact;
@@ -313,9 +329,9 @@ double contactModel::maxPenetrationGrowth() const
 
 long contactModel::overlapsAtStart() const
 {
-    return std::count_if(active_.begin(), active_.end(), [this](const active& a)
+    return std::count_if(active_.begin(), active_.end(), [](const active& a)
     {
-        return a.gap0 <= -settings_.overlapRelief;
+        return a.relieved;
     });
 }
 

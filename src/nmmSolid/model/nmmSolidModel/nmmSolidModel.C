@@ -238,8 +238,8 @@ bool nmmSolidModel::solveWithContacts
 
     const int maxIterations = parts_.controls
         ? parts_.controls->contact().maxOpenCloseIterations : contactSettings().maxOpenCloseIterations;
-    bool settled = false, frictionSettled = false;
-    for (int it = 1; it <= maxIterations && !frictionSettled; ++it)
+    bool settled = false;
+    for (int it = 1; it <= maxIterations && !settled; ++it)
     {
         clock = cpuTime();
         const Eigen::SparseMatrix<double> K = sys.K + contacts_->matrix(n);
@@ -255,8 +255,7 @@ bool nmmSolidModel::solveWithContacts
         report.contacts = counts.states;
         report.bondsBroken += counts.bondsBroken;
         logIteration(it, counts);
-        settled = counts.changes == 0;
-        frictionSettled = settled && counts.frictionUpdates == 0;
+        settled = counts.changes == 0 && counts.frictionUpdates == 0;
     }
 
     report.maxPenetration = contacts_->maxPenetration();
