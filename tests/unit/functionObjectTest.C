@@ -56,7 +56,7 @@ struct testCase
     )
     {
         dir.write("system/controlDict", std::string(header)
-            + "endTime 1; deltaT 1;\nfunctions {" + functions + "}\n");
+            + "endTime 1; deltaT 1; writeInterval 1;\nfunctions {" + functions + "}\n");
         dir.write("system/nmmMeshDict", std::string(header) + "blocks (" + blocks
             + ");\npatches {" + patches + "}\ncover { type structured; cellSize 0.25; }\n");
         dir.write("system/nmmSolution", std::string(header) + solution);
@@ -264,8 +264,8 @@ TEST(blockMotion, rigidRotationOfAnySize)
     // A static step that turns the block by 60 degrees about its centre
     const std::string field =
         "{ type fixedValue; value expression \"vector("
-        "cos(pi/3)*(x - 0.5) - sin(pi/3)*(y - 0.5) + 0.5 - x, "
-        "sin(pi/3)*(x - 0.5) + cos(pi/3)*(y - 0.5) + 0.5 - y, 0)\"; }";
+        "0.5*(x - 0.5) - 0.8660254037844386*(y - 0.5) + 0.5 - x, "
+        "0.8660254037844386*(x - 0.5) + 0.5*(y - 0.5) + 0.5 - y, 0)\"; }";
     testCase c
     (
         square, sides, staticLinear, "left " + field + " rest " + field,
@@ -277,7 +277,7 @@ TEST(blockMotion, rigidRotationOfAnySize)
     const auto& row = list[0].lastRow();
     EXPECT_NEAR(row[1], 0.5, 1e-9);
     EXPECT_NEAR(row[2], 0.5, 1e-9);
-    EXPECT_NEAR(row[3], M_PI/3, 1e-9);
+    EXPECT_NEAR(row[3], std::atan2(0.8660254037844386, 0.5), 1e-9);
 }
 
 
@@ -393,7 +393,7 @@ TEST(functionObject, folderIsNamedAfterTheStartTime)
 {
     testCase c(square, sides, staticLinear, freeAll);
     c.dir.write("system/controlDict", std::string(header)
-        + "startFrom startTime; startTime 0.5; endTime 1; deltaT 0.5;\n"
+        + "startFrom startTime; startTime 0.5; endTime 1; deltaT 0.5; writeInterval 1;\n"
           "functions { e { type energy; } }\n");
     nm::Time::options opts;
     std::ostringstream quiet;
