@@ -16,6 +16,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace nm = nmm;
 using nmm::test::errorOf;
@@ -340,6 +341,42 @@ TEST(energy, stretchedBarClapeyron)
     EXPECT_NEAR(row[2], strain, 1e-10*strain);
     EXPECT_NEAR(row[4], 2*strain, 1e-10*strain);
     EXPECT_EQ(row[1], 0);
+}
+
+
+TEST(contactStatistics, rowsAreTheStepReports)
+{
+    // A cap resting on a column that stands on a held base
+    testCase c
+    (
+        "column { material rock; polygon ((0 0) (1 0) (1 1) (0 1)); }"
+        "cap { material rock; polygon ((0 1) (1 1) (1 1.5) (0 1.5)); }",
+        "base { type edges; edges ((column 0)); }",
+        newmark,
+        "base { type fixedValue; value uniform (0 0 0); }",
+        "contacts { type contactStatistics; }",
+        "(0 -9.81 0)"
+    );
+    ASSERT_NE(c.model->contacts(), nullptr);
+    auto list = c.functions();
+    list.start();
+    EXPECT_TRUE(list[0].lastRow().empty());
+    long closed = 0;
+    for (int n = 0; n < 3; ++n)
+    {
+        c.step(1e-3);
+        list.execute();
+        const auto& r = c.model->lastStep();
+        const std::vector<double> expected
+        {
+            c.model->time(), r.deltaT, double(r.contacts[0]), double(r.contacts[1]),
+            double(r.contacts[2]), double(r.bondsBroken), r.maxPenetration,
+            double(r.iterations), double(r.cuts)
+        };
+        EXPECT_EQ(list[0].lastRow(), expected);
+        closed += r.contacts[1] + r.contacts[2];
+    }
+    EXPECT_GT(closed, 0);
 }
 
 
