@@ -13,15 +13,25 @@ functionObjectList::functionObjectList
 )
 {
     if (!runTime.functionObjectsEnabled()) return;
-    const dictionary* functions = runTime.controlDict().findDict("functions");
-    if (functions)
+    if (const dictionary* functions = runTime.controlDict().findDict("functions"))
     {
-        *this = functionObjectList(*functions, runTime, model);
+        read(*functions, runTime, model);
     }
 }
 
 
 functionObjectList::functionObjectList
+(
+    const dictionary& functions,
+    const Time& runTime,
+    const nmmSolidModel& model
+)
+{
+    read(functions, runTime, model);
+}
+
+
+void functionObjectList::read
 (
     const dictionary& functions,
     const Time& runTime,
