@@ -113,10 +113,19 @@ allrun)
     expectInFile log.nmmSolidFoam "Exec   : nmmSolidFoam"
     expectEqual "last line" "$(grep -v '^$' log.nmmSolidFoam | tail -n 1)" "End"
     expectEqual "hidden entries" "$(ls -A | grep '^\.' | tr '\n' ' ')" ""
+    # Function objects: '#' header, the start row and one row per step
+    for f in motion balance
+    do
+        file="postProcessing/$f/0/$f.dat"
+        [ -f "$file" ] || fail "no $file"
+        expectEqual "$file header" "$(head -c 7 "$file")" "# time "
+        expectEqual "$file rows" "$(grep -vc '^#' "$file")" "13"
+    done
 
     ./Allclean || fail "Allclean returned $?"
     expectEqual "time directories after Allclean" "$(timeDirs)" ""
     [ -f log.nmmSolidFoam ] && fail "Allclean left log.nmmSolidFoam"
+    [ -d postProcessing ] && fail "Allclean left postProcessing"
     ;;
 
 restart)
@@ -128,6 +137,15 @@ restart)
         "0.00025 0.0005 0.00075 0.001 0.00125 0.0015 0.00175 0.002"
     expectInFile log.restart "Start time = 0.001, time index 12"
     expectEqual "index of 0.002" "$(entry 0.002/uniform/time index)" "24"
+    # The restarted run's rows go to a folder of its start time, as in
+    # OpenFOAM; the first run's file stays
+    expectEqual "rows of the first run" \
+        "$(grep -vc '^#' postProcessing/motion/0/motion.dat)" "13"
+    expectEqual "rows of the restarted run" \
+        "$(grep -vc '^#' postProcessing/motion/0.001/motion.dat)" "13"
+    expectEqual "first row of the restart" \
+        "$(grep -v '^#' postProcessing/motion/0.001/motion.dat | head -n 1 | cut -d' ' -f2-)" \
+        "$(grep -v '^#' postProcessing/motion/0/motion.dat | tail -n 1 | cut -d' ' -f2-)"
 
     # The restarted run reproduces an uninterrupted one (state from
     # 0.001/nmmState.h5): the displacements of the last frames agree
@@ -171,6 +189,13 @@ signal)
     expectEqual "number of time directories" "$(echo "$dirs" | wc -w)" "1"
     [ -f "$dirs/uniform/time" ] || fail "no uniform/time in '$dirs'"
     expectEqual "hidden entries" "$(ls -A | grep '^\.' | tr '\n' ' ')" ""
+    # The stopped run's tables have the start row and one per step
+    index="$(entry "$dirs/uniform/time" index)"
+    for f in motion balance
+    do
+        expectEqual "$f rows" "$(grep -vc '^#' "postProcessing/$f/0/$f.dat")" \
+            "$((index + 1))"
+    done
     ;;
 
 writeNow)
@@ -202,10 +227,22 @@ errors)
     nmmSolidFoam -dry-run > log.dryRun 2>&1 || fail "-dry-run returned $?"
     expectInFile log.dryRun "Dry run"
     expectEqual "time directories after -dry-run" "$(timeDirs)" ""
+    [ -d postProcessing ] && fail "-dry-run wrote postProcessing"
 
     nmmSolidFoam -help > log.help 2>&1 || fail "-help returned $?"
     expectInFile log.help "Keywords of system/controlDict"
     expectInFile log.help "adjustableRunTime"
+    expectInFile log.help "type patchDisplacement"
+
+    # -noFunctionObjects does not even read the entries
+    cp system/controlDict controlDict.orig
+    sed -i 's/type energy;/type energi;/' system/controlDict
+    nmmSolidFoam -dry-run -noFunctionObjects > /dev/null 2>&1 \
+        || fail "-noFunctionObjects read the function objects"
+    nmmSolidFoam -dry-run > /dev/null 2> err.functionObject
+    expectEqual "bad function object exit code" "$?" "1"
+    expectInFile err.functionObject "did you mean 'energy'?"
+    cp controlDict.orig system/controlDict
 
     nmmSolidFoam -cse . > /dev/null 2> err.option
     expectEqual "unknown option exit code" "$?" "1"

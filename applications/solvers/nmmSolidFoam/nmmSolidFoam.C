@@ -9,7 +9,9 @@ Description
     Each time step is one implicit solve of the NMM equations (static,
     DDA or Newmark, see nmm::nmmSolidModel). Every write time gets a time
     directory with uniform/time and the restart state (nmmState.h5) and a
-    VTK frame under VTK/ (see nmm::solidOutput).
+    VTK frame under VTK/ (see nmm::solidOutput). The function objects of
+    the controlDict's 'functions' write a row per step under
+    postProcessing/<name>/<startTime>/ (see nmm::functionObject).
 
 Usage
     nmmSolidFoam [-case dir] [-dry-run] [-noFunctionObjects]
@@ -24,6 +26,7 @@ Usage
 #include "nmmSolid/global/signals/stopSignals.H"
 #include "nmmSolid/boundary/boundaryConditions/boundaryConditions.H"
 #include "nmmSolid/boundary/gravity/gravity.H"
+#include "nmmSolid/functionObjects/functionObjectList/functionObjectList.H"
 #include "nmmSolid/io/case/Time/Time.H"
 #include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
 #include "nmmSolid/output/solidOutput/solidOutput.H"
@@ -76,6 +79,14 @@ nmm::argList makeArgList()
     args.addKeywordHelp("system/nmmSolution", nmm::solutionControls::keywords());
     args.addKeywordHelp("0/D, each patch of boundaryField", nmm::boundaryConditions::keywords());
     args.addKeywordHelp("constant/g", nmm::gravity::keywords());
+    for (const auto& type : nmm::functionObject::types())
+    {
+        args.addKeywordHelp
+        (
+            "system/controlDict, functions { <name> { type " + type + "; } }",
+            *nmm::functionObject::keywordsOf(type)
+        );
+    }
     return args;
 }
 
@@ -202,6 +213,10 @@ int run(int argc, char* argv[])
         nmm::solidOutput::writeState(dir, *model);
     });
 
+    // Built (and checked) before the dry run stops; the files are made
+    // with their first row
+    nmm::functionObjectList functions(runTime, *model);
+
     if (args.found("dry-run"))
     {
         std::cout << "Dry run: every input was read and is valid;"
@@ -215,6 +230,7 @@ int run(int argc, char* argv[])
     }
 
     std::cout << "\nStarting time loop\n" << std::endl;
+    functions.start();
 
     model->setLog(std::cout);
     nmm::stepController steps = makeStepController(runTime, *model);
@@ -260,6 +276,7 @@ int run(int argc, char* argv[])
         std::cout << "Time = " << runTime.timeName() << "\n" << std::endl;
         printContacts(*model);
         std::cout << "    max |D| = " << largestDisplacement(*model) << '\n';
+        functions.execute();
 
         runTime.write();
         if (runTime.writeTime()) writeFrame();

@@ -421,6 +421,24 @@ void nmmAssembler::addNitsche
 }
 
 
+Eigen::VectorXd nmmAssembler::externalForces(const solidState& s, double t) const
+{
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(Eigen::Index(nUnknowns()));
+    addBodyForce(f);
+    const auto patchD = patchDisplacements(s.D);
+    for (std::size_t i = 0; i < rules_.size(); ++i)
+    {
+        const boundaryRule* rule = rules_[i];
+        if (!rule || rule->type != boundaryRule::kind::traction) continue;
+        const auto& seg = pc_.segments()[i];
+        const auto g = currentSegment(currentTriangle(seg.element, patchD), seg);
+        if (g.length == 0) continue;
+        addTraction(*rule, seg, g.length, g.normal, t, f);
+    }
+    return f;
+}
+
+
 void nmmAssembler::buildMass()
 {
     triplets M;

@@ -1,0 +1,92 @@
+#include "nmmSolid/functionObjects/energy/energy.H"
+
+#include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
+
+namespace nmm
+{
+
+const keywordTable& energy::keywords()
+{
+    static const keywordTable table = []
+    {
+        keywordTable t
+        (
+            "energy",
+            "kinetic, strain and contact energy, work of the external loads"
+        );
+        t.include(functionObject::commonKeywords());
+        return t;
+    }();
+    return table;
+}
+
+
+energy::energy
+(
+    const std::string& name,
+    const Time& runTime,
+    const nmmSolidModel& model,
+    const dictionary& dict
+)
+:
+    functionObject(name, runTime, model, dict, "energy", keywords())
+{
+    writeHeader({"time", "kinetic", "strain", "contact", "work", "total"});
+}
+
+
+double energy::kinetic() const
+{
+    const auto& M = model_.assembler().mass();
+    if (!model_.scheme().dynamic() || M.nonZeros() == 0) return 0;
+    const Eigen::VectorXd& V = model_.state().V;
+    return 0.5*V.dot(M*V);
+}
+
+
+double energy::strain() const
+{
+    const nmmAssembler& a = model_.assembler();
+    const Eigen::Matrix2Xd patchD = model_.patchDisplacements();
+    const auto& sigma = model_.state().sigma;
+    double sum = 0;
+    for (std::size_t e = 0; e < sigma.size(); ++e)
+    {
+        const auto label = nmmAssembler::label(e);
+        const Eigen::Vector3d s = sigma[e].head<3>();
+        const double area = a.currentArea(label, a.currentTriangle(label, patchD));
+        sum += 0.5*s.dot(a.material(label).D.ldlt().solve(s))*area;
+    }
+    return sum*a.thickness();
+}
+
+
+double energy::contact() const
+{
+    const contactModel* c = model_.contacts();
+    return c ? c->energy(model_.state().contacts) : 0.0;
+}
+
+
+void energy::accumulateWork()
+{
+    const solidState& s = model_.state();
+    Eigen::VectorXd f1 = model_.assembler().externalForces(s, s.time);
+    if (started_)
+    {
+        work_ += 0.5*(f0_ + f1).dot(s.D - D0_);
+    }
+    started_ = true;
+    f0_ = std::move(f1);
+    D0_ = s.D;
+}
+
+
+void energy::execute()
+{
+    accumulateWork();
+    const double k = kinetic(), e = strain(), c = contact();
+    writeRow({model_.time(), k, e, c, work_, k + e + c - work_});
+}
+
+} // End namespace nmm
