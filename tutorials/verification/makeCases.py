@@ -69,7 +69,9 @@ def write(case, rel, location, obj, body, cls="dictionary"):
     path.write_text(header(location, obj, cls) + body + FOOTER)
 
 
-def controlDict(case, endTime, deltaT, comment):
+def controlDict(case, endTime, deltaT, comment, writeInterval=None, adjust=False):
+    """Every step written (writeInterval None), or every writeInterval of
+    run time on adjusted steps"""
     write(case, "system/controlDict", "system", "controlDict", """\
 // %s
 application     nmmSolidFoam;
@@ -84,9 +86,9 @@ endTime         %s;
 
 deltaT          %s;
 
-writeControl    timeStep;
+writeControl    %s;
 
-writeInterval   1;
+writeInterval   %s;
 
 purgeWrite      0;
 
@@ -100,12 +102,14 @@ timePrecision   8;
 
 runTimeModifiable yes;
 
-adjustTimeStep  no;
+adjustTimeStep  %s;
 
 functions
 {
 }
-""" % (comment, endTime, deltaT))
+""" % (comment, endTime, deltaT,
+       "timeStep" if writeInterval is None else "adjustableRunTime",
+       1 if writeInterval is None else writeInterval, "yes" if adjust else "no"))
 
 
 def staticSolution(case, smallDisplacement=False):
@@ -485,42 +489,7 @@ def readme(case, text):
 
 def dynamicControlDict(case, endTime, deltaT, writeInterval, comment,
                        adjust=False):
-    write(case, "system/controlDict", "system", "controlDict", """\
-// %s
-application     nmmSolidFoam;
-
-startFrom       startTime;
-
-startTime       0;
-
-stopAt          endTime;
-
-endTime         %s;
-
-deltaT          %s;
-
-writeControl    adjustableRunTime;
-
-writeInterval   %s;
-
-purgeWrite      0;
-
-writeFormat     binary;         // VTK frames exact and compact
-
-writePrecision  12;
-
-timeFormat      general;
-
-timePrecision   8;
-
-runTimeModifiable yes;
-
-adjustTimeStep  %s;
-
-functions
-{
-}
-""" % (comment, endTime, deltaT, writeInterval, "yes" if adjust else "no"))
+    controlDict(case, endTime, deltaT, comment, writeInterval, adjust)
 
 
 def gravity(case, gx, gy, comment=""):
