@@ -26,6 +26,8 @@ Usage
 #include "nmmSolid/global/signals/stopSignals.H"
 #include "nmmSolid/boundary/boundaryConditions/boundaryConditions.H"
 #include "nmmSolid/boundary/gravity/gravity.H"
+#include "nmmSolid/contact/contactProperties/contactProperties.H"
+#include "nmmSolid/contact/mohrCoulomb/mohrCoulomb.H"
 #include "nmmSolid/functionObjects/functionObjectList/functionObjectList.H"
 #include "nmmSolid/io/case/Time/Time.H"
 #include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
@@ -79,6 +81,12 @@ nmm::argList makeArgList()
     args.addKeywordHelp("system/nmmSolution", nmm::solutionControls::keywords());
     args.addKeywordHelp("0/D, each patch of boundaryField", nmm::boundaryConditions::keywords());
     args.addKeywordHelp("constant/g", nmm::gravity::keywords());
+    args.addKeywordHelp("constant/contactProperties", nmm::contactProperties::keywords());
+    args.addKeywordHelp
+    (
+        "constant/contactProperties, default and each pair (law mohrCoulomb)",
+        nmm::mohrCoulomb::keywords()
+    );
     for (const auto& type : nmm::functionObject::types())
     {
         args.addKeywordHelp
