@@ -90,18 +90,29 @@ contactModel::terms contactModel::relativeTerms
     const contactVertex& a = loops[c.edgeLoop].edgeStart(c.edge);
     const manifoldElement::baryPoint edgePoint = (1 - c.t)*a.lambda + c.t*a.edgeEndLambda;
 
-    // u(vertex) - u(edge point), each through its element's weights
-    std::map<label, double> sum;
+    // u(vertex) - u(edge point), each through its element's weights; the
+    // terms of a dof both share are summed after sorting
+    terms all;
     const auto add = [&](std::int32_t e, const manifoldElement::baryPoint& w, double sign)
     {
         for (const auto& t : assembler_.dofTerms(e))
         {
-            sum[t.dof] += sign*w[t.local/2]*dir[t.local%2]*t.coefficient;
+            all.emplace_back(t.dof, sign*w[t.local/2]*dir[t.local%2]*t.coefficient);
         }
     };
     add(v.element, v.lambda, 1);
     add(a.element, edgePoint, -1);
-    return terms(sum.begin(), sum.end());
+    std::stable_sort(all.begin(), all.end(), [](const auto& x, const auto& y)
+    {
+        return x.first < y.first;
+    });
+    terms merged;
+    for (const auto& [dof, c] : all)
+    {
+        if (!merged.empty() && merged.back().first == dof) merged.back().second += c;
+        else merged.emplace_back(dof, c);
+    }
+    return merged;
 }
 
 
