@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -320,18 +321,22 @@ TEST(contactSearch, crackFacesClosing)
     const auto pairs = search.loopPairs(loops);
     ASSERT_EQ(pairs.size(), 1u);
     EXPECT_EQ(pairs[0], std::make_pair(std::size_t(0), std::size_t(1)));
+    // The faces' vertices face each other: each of the six is a contact
+    // (in key order: the first face's, then the second's)
     const auto c = search.find(loops);
-    ASSERT_EQ(c.size(), 3u);
-    for (int i = 0; i < 3; ++i)
+    ASSERT_EQ(c.size(), 6u);
+    for (int i = 0; i < 6; ++i)
     {
-        EXPECT_EQ(c[i].vertexLoop, 0);
-        EXPECT_EQ(c[i].vertex, i);
-        EXPECT_EQ(c[i].edgeLoop, 1);
+        EXPECT_EQ(c[i].vertexLoop, i/3);
+        EXPECT_EQ(c[i].vertex, i%3);
+        EXPECT_EQ(c[i].edgeLoop, 1 - i/3);
         EXPECT_NEAR(c[i].gap, g, 1e-12);
     }
     // The middle vertex meets both faces' edges at their common vertex: once
     EXPECT_EQ(c[0].edge, 1);
     EXPECT_EQ(c[2].edge, 0);
+    EXPECT_EQ(c[3].edge, 1);
+    EXPECT_EQ(c[5].edge, 0);
 }
 
 
@@ -351,16 +356,18 @@ TEST(contactSearch, gridOf10000Squares)
         }
     }
     const auto c = contactSearch(d).find(loops);
-    // Two edge-to-edge contacts per side-by-side pair
-    EXPECT_EQ(c.size(), std::size_t(2*2*n*(n - 1)));
+    // Four edge-to-edge contacts per side-by-side pair: at each end of the
+    // facing sides, each square's corner against the other's side
+    EXPECT_EQ(c.size(), std::size_t(4*2*n*(n - 1)));
 }
 
 
 // Squares with every side cut in 4, 0.08 apart, on rows 57 to 60 of the
 // benchmark's grid: there the cut points of facing sides differ in their
 // last bits, and a vertex at the common vertex of two cut pieces must still
-// give one contact. Five contacts per side-by-side pair (the cut points).
-TEST(contactSearch, splitSquaresGiveOneContactPerCutPoint)
+// give one contact. Ten contacts per side-by-side pair: each side's five
+// cut points against the facing side.
+TEST(contactSearch, splitSquaresGiveOneContactPerCutPointAndSide)
 {
     const double d = 0.1, g = 0.08;
     const int n = 4, row0 = 57;
@@ -373,7 +380,7 @@ TEST(contactSearch, splitSquaresGiveOneContactPerCutPoint)
         }
     }
     const auto c = contactSearch(d).find(loops);
-    EXPECT_EQ(c.size(), std::size_t(5*2*n*(n - 1)));
+    EXPECT_EQ(c.size(), std::size_t(10*2*n*(n - 1)));
 
     // The contacts of each pair of facing sides stand for the whole side
     std::map<std::pair<int, int>, double> length;
@@ -388,9 +395,10 @@ TEST(contactSearch, splitSquaresGiveOneContactPerCutPoint)
 
 
 // Two unit squares sharing a side, cut in 3 pieces on the left square's
-// side and in 5 on the right one's: eight edge-to-edge contacts, one at each
-// cut point and corner, each standing for half the distance to its
-// neighbours on either side, together for the whole side
+// side and in 5 on the right one's: one edge-to-edge contact at each cut
+// point and two at each shared corner (each square's corner against the
+// other's side), the contacts of each point together standing for half the
+// distance to its neighbours on either side, all for the whole side
 TEST(contactSearch, sharedSideCutDifferentlyOnEachFace)
 {
     const double d = 0.1;
@@ -400,27 +408,79 @@ TEST(contactSearch, sharedSideCutDifferentlyOnEachFace)
         loop(1, {{1, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 0.8}, {1, 0.6}, {1, 0.4}, {1, 0.2}})
     };
     const auto c = contactSearch(d).find(loops);
-    ASSERT_EQ(c.size(), 8u);
+    ASSERT_EQ(c.size(), 10u);
 
-    std::vector<std::pair<double, double>> yAndLength;
+    std::map<double, std::pair<int, double>> atY;     // count, length
     double sum = 0;
     for (const auto& k : c)
     {
         EXPECT_EQ(k.type, contactCandidate::edgeEdge);
         EXPECT_NEAR(k.gap, 0, 1e-12);
-        yAndLength.emplace_back(loops[k.vertexLoop].vertices[k.vertex].x.y(), k.length);
+        auto& [count, length] = atY[loops[k.vertexLoop].vertices[k.vertex].x.y()];
+        ++count;
+        length += k.length;
         sum += k.length;
     }
     EXPECT_NEAR(sum, 1, 1e-12);
 
-    std::sort(yAndLength.begin(), yAndLength.end());
     const std::vector<double> y{0, 0.2, 1.0/3, 0.4, 0.6, 2.0/3, 0.8, 1};
-    for (std::size_t i = 0; i < y.size(); ++i)
+    ASSERT_EQ(atY.size(), y.size());
+    auto point = atY.begin();
+    for (std::size_t i = 0; i < y.size(); ++i, ++point)
     {
         const double below = i == 0 ? 0 : y[i] - y[i - 1];
         const double above = i + 1 == y.size() ? 0 : y[i + 1] - y[i];
-        EXPECT_NEAR(yAndLength[i].first, y[i], 1e-12);
-        EXPECT_NEAR(yAndLength[i].second, 0.5*(below + above), 1e-12);
+        const bool corner = i == 0 || i + 1 == y.size();
+        EXPECT_NEAR(point->first, y[i], 1e-12);
+        EXPECT_EQ(point->second.first, corner ? 2 : 1);
+        EXPECT_NEAR(point->second.second, 0.5*(below + above), 1e-12);
+    }
+}
+
+
+// A block resting on a base whose side is cut where the block's corners are
+// (as a cover cuts both): the block's corners keep their contacts, on the
+// same or the next edge, when the block slips by a little either way, and
+// so do the base's cut points as long as they still lie under the block,
+// so that the history of a bond formed there (carried by the contact's
+// vertex and edge) survives the interface's first elastic slip
+TEST(contactSearch, coincidentCornersKeepTheirContactsAfterASlip)
+{
+    const double d = 0.1;
+    using Key = std::tuple<int, int, int>;          // vertex loop, vertex, edge loop
+    const auto keys = [&](double shift)
+    {
+        const std::vector<contactLoop> loops
+        {
+            loop(0, {{-1, -1}, {2, -1}, {2, 0}, {1, 0}, {0, 0}, {-1, 0}}),
+            rect(1, shift, 0, 1 + shift, 1)
+        };
+        std::map<Key, int> edges;
+        for (const auto& k : contactSearch(d).find(loops))
+        {
+            edges[{k.vertexLoop, k.vertex, k.edgeLoop}] = k.edge;
+        }
+        return edges;
+    };
+    const auto before = keys(0);
+    // Both corners of the block and both cut points of the base
+    ASSERT_EQ(before.size(), 4u);
+    for (const double shift : {1e-6, -1e-6})
+    {
+        const auto after = keys(shift);
+        // The base's cut point the block has slipped off: (0, 0) or (1, 0)
+        const Key off{0, shift > 0 ? 4 : 3, 1};
+        ASSERT_EQ(after.size(), 3u) << "shift " << shift;
+        EXPECT_EQ(after.count(off), 0u) << "shift " << shift;
+        for (const auto& [key, edge] : before)
+        {
+            if (key == off) continue;
+            ASSERT_EQ(after.count(key), 1u) << "shift " << shift;
+            const int n = std::get<2>(key) == 0 ? 6 : 4;
+            const int e = after.at(key);
+            EXPECT_TRUE(e == edge || (e + 1)%n == edge || (edge + 1)%n == e)
+                << "shift " << shift;
+        }
     }
 }
 
@@ -469,11 +529,15 @@ TEST(contactSearch, crackFacesShareTheirLength)
         loop(0, {{0, 0}, {1, 0}, {2, 0}}, k::jointFace, 4),
         loop(0, {{2, -g}, {1, -g}, {0, -g}}, k::jointFace, 4)
     };
+    // Each face's vertices against the other face, sharing the length
     const auto c = contactSearch(d).find(loops);
-    ASSERT_EQ(c.size(), 3u);
-    EXPECT_NEAR(c[0].length, 0.5, 1e-12);
-    EXPECT_NEAR(c[1].length, 1, 1e-12);
-    EXPECT_NEAR(c[2].length, 0.5, 1e-12);
+    ASSERT_EQ(c.size(), 6u);
+    for (int face = 0; face < 2; ++face)
+    {
+        EXPECT_NEAR(c[3*face].length, 0.25, 1e-12);
+        EXPECT_NEAR(c[3*face + 1].length, 0.5, 1e-12);
+        EXPECT_NEAR(c[3*face + 2].length, 0.25, 1e-12);
+    }
 }
 
 

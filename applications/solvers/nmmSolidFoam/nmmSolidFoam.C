@@ -178,7 +178,17 @@ std::unique_ptr<nmm::nmmSolidModel> createModel(const nmm::Time& runTime)
         << ", physical patches " << pc.nPatches()
         << " (" << pc.stats().nExtendedPatches << " extended)"
         << ", unknowns " << pc.nUnknowns() << '\n'
-        << "    analysis " << model->scheme().name() << "\n" << std::endl;
+        << "    analysis " << model->scheme().name() << '\n';
+    if (const auto* c = model->contacts())
+    {
+        // The values "auto" stands for, so that a log tells the whole story
+        const auto& p = c->parameters();
+        std::cout << "    contact: normalPenalty " << p.normalPenalty
+            << ", shearPenalty " << p.shearPenalty
+            << " (for a tributary length of " << c->referenceLength() << ")"
+            << ", searchDistance " << p.searchDistance << '\n';
+    }
+    std::cout << std::endl;
     return model;
 }
 

@@ -84,6 +84,33 @@ contactVertex lastPoint
 } // End anonymous namespace
 
 
+int contactLoop::prevVertex(int i) const
+{
+    const int n = int(vertices.size());
+    if (closed) return (i + n - 1)%n;
+    return i == 0 ? -1 : i - 1;
+}
+
+
+int contactLoop::nextVertex(int i) const
+{
+    const int n = int(vertices.size());
+    if (closed) return (i + 1)%n;
+    return i + 1 == n ? -1 : i + 1;
+}
+
+
+double contactLoop::tributaryLength(int i) const
+{
+    double result = 0;
+    for (const int j : {prevVertex(i), nextVertex(i)})
+    {
+        if (j >= 0) result += 0.5*(vertices[j].x - vertices[i].x).norm();
+    }
+    return result;
+}
+
+
 contactBoundaries::contactBoundaries
 (
     const mathematicalCover& cover,

@@ -23,6 +23,28 @@ constexpr double frictionTolerance = 1e-2;
 //- State changes of one contact within a step before it is held
 constexpr int maxChangesPerStep = 3;
 
+//- Smallest spring weight: a contact at a sliver's vertex (a tiny
+//  tributary length) still resists penetration
+constexpr double minWeight = 0.05;
+
+
+//- Median tributary length of the loops' vertices, 1 without vertices
+double medianTributaryLength(const std::vector<contactLoop>& loops)
+{
+    std::vector<double> l;
+    for (const contactLoop& loop : loops)
+    {
+        for (int i = 0; i < int(loop.vertices.size()); ++i)
+        {
+            l.push_back(loop.tributaryLength(i));
+        }
+    }
+    if (l.empty()) return 1;
+    const auto mid = l.begin() + l.size()/2;
+    std::nth_element(l.begin(), mid, l.end());
+    return *mid > 0 ? *mid : 1;
+}
+
 vec tangentOf(const contactLoop& l, int e)
 {
     return (l.edgeEnd(e).x - l.edgeStart(e).x).normalized();
@@ -75,8 +97,15 @@ contactModel::contactModel
     settings_(s),
     thickness_(thickness),
     boundaries_(cover, pc, geometry),
+    referenceLength_(medianTributaryLength(boundaries_.loops())),
     search_(s.searchDistance)
 {}
+
+
+double contactModel::weight(double l) const
+{
+    return std::max(l/referenceLength_, minWeight);
+}
 
 
 contactModel::terms contactModel::relativeTerms
@@ -148,6 +177,8 @@ void contactModel::beginStep
         a.record.length = c.length;
         a.record.gap = c.gap;
         a.gap0 = c.gap;
+        a.kN = settings_.normalPenalty*thickness_*weight(c.length);
+        a.kS = settings_.shearPenalty*thickness_*weight(c.length);
         a.law = &lawOf(c);
         const contactLoop& el = loops[c.edgeLoop];
         const vec s = tangentOf(el, c.edge);
@@ -222,8 +253,8 @@ contactModel::sparseMatrix contactModel::matrix(long nUnknowns) const
     for (const active& a : active_)
     {
         const contactState s = a.record.state;
-        addOuter(a.g, isClosed(s) ? kN() : 0.0, K);
-        addOuter(a.h, s == contactState::bonded ? kS() : 0.0, K);
+        addOuter(a.g, isClosed(s) ? a.kN : 0.0, K);
+        addOuter(a.h, s == contactState::bonded ? a.kS : 0.0, K);
     }
     sparseMatrix M(nUnknowns, nUnknowns);
     M.setFromTriplets(K.begin(), K.end());
@@ -238,7 +269,7 @@ Eigen::VectorXd contactModel::forces(long nUnknowns) const
     {
         const contactState s = a.record.state;
         double normal = 0, shear = 0;
-        if (isClosed(s)) normal = -kN()*a.gap0;
+        if (isClosed(s)) normal = -a.kN*a.gap0;
         if (s == contactState::bonded) shear = a.shearForce0;
         if (s == contactState::sliding) shear = a.friction;
         for (const auto& [dof, c] : a.g) f[dof] += normal*c;
@@ -264,8 +295,8 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
         q.gap = r.gap;
         // An open contact gets the trial forces of closing over the whole
         // step, so that one that closes while slipping starts sliding
-        q.Fn = -kN()*r.gap;
-        q.Fs = a.shearForce0 - kS()*a.ds;
+        q.Fn = -a.kN*r.gap;
+        q.Fs = a.shearForce0 - a.kS*a.ds;
         q.length = r.length*thickness_;
         q.shearDisplacement = r.state == contactState::bonded ? 0 : a.ds;
 
@@ -374,8 +405,12 @@ double contactModel::energy(const std::vector<contactRecord>& records) const
     for (const auto& r : records)
     {
         if (!isClosed(r.state)) continue;
-        e += 0.5*r.normalForce*r.normalForce/kN();
-        if (r.state == contactState::bonded) e += 0.5*r.shearForce*r.shearForce/kS();
+        const double w = thickness_*weight(r.length);
+        e += 0.5*r.normalForce*r.normalForce/(settings_.normalPenalty*w);
+        if (r.state == contactState::bonded)
+        {
+            e += 0.5*r.shearForce*r.shearForce/(settings_.shearPenalty*w);
+        }
     }
     return e;
 }

@@ -19,22 +19,6 @@ using vec = Eigen::Vector2d;
 using vertexRef = std::pair<int, int>;          // (loop, vertex)
 
 
-int prevVertex(const contactLoop& l, int i)
-{
-    const int n = int(l.vertices.size());
-    if (l.closed) return (i + n - 1)%n;
-    return i == 0 ? -1 : i - 1;
-}
-
-
-int nextVertex(const contactLoop& l, int i)
-{
-    const int n = int(l.vertices.size());
-    if (l.closed) return (i + 1)%n;
-    return i + 1 == n ? -1 : i + 1;
-}
-
-
 //- Outward normal of edge a->b: the material is on the left, so the right
 //  hand points out of it
 vec outwardNormal(const vec& a, const vec& b)
@@ -48,8 +32,8 @@ vec outwardNormal(const vec& a, const vec& b)
 //  material surrounds it, so it cannot be the vertex of a contact
 bool isReflex(const contactLoop& l, int i, double angleTolerance)
 {
-    const int p = prevVertex(l, i);
-    const int q = nextVertex(l, i);
+    const int p = l.prevVertex(i);
+    const int q = l.nextVertex(i);
     if (p < 0 || q < 0) return false;
     const vec a = l.vertices[i].x - l.vertices[p].x;
     const vec b = l.vertices[q].x - l.vertices[i].x;
@@ -106,20 +90,6 @@ struct pairBuffers
 };
 
 
-//- Tributary length of a vertex contact: half of each of the vertex's own
-//  edges (one at the ends of an open polyline)
-double vertexLength(const contactLoop& l, int i)
-{
-    const vec& x = l.vertices[i].x;
-    double result = 0;
-    for (const int j : {prevVertex(l, i), nextVertex(l, i)})
-    {
-        if (j >= 0) result += 0.5*(l.vertices[j].x - x).norm();
-    }
-    return result;
-}
-
-
 //- How well the vertex's material wedge lies on the outer side of the
 //  candidate edge's line: min over its edge directions of u.n
 double fit(const contactLoop& vl, int v, const contactLoop& el, int e)
@@ -129,7 +99,7 @@ double fit(const contactLoop& vl, int v, const contactLoop& el, int e)
     double result = 1;
     // u runs along the vertex's own edges (one at the ends of an open
     // polyline; a zero-length edge has no direction)
-    for (const int j : {prevVertex(vl, v), nextVertex(vl, v)})
+    for (const int j : {vl.prevVertex(v), vl.nextVertex(v)})
     {
         if (j < 0 || (vl.vertices[j].x - x).norm() == 0) continue;
         const vec u = (vl.vertices[j].x - x).normalized();
@@ -303,25 +273,32 @@ class pairSearch
         const double lo = std::max(0.0, sb1), hi = std::min(la, sb0);
         if (hi - lo <= 1e-9*std::max(la, lb)) return;
 
-        // Ends that coincide up to rounding are one point: the lower loop's
-        // vertex is taken there, the same for every pair of cut edges
+        // Each end stands for half of the overlap. At an end where the two
+        // edges' vertices coincide up to rounding both vertices get a
+        // contact, a quarter each: the two contacts keep their keys when
+        // the ends part by a little, so a bond formed there survives the
+        // first small slip of the interface
         const double eps = 1e-9*std::max(la, lb);
-        // Each end stands for half of the overlap
         const double half = 0.5*(hi - lo);
-        // Low end: a's start if it lies inside b, else b's end
-        addEnd(sb1 <= eps, ea, 0, eb, 1, half);
-        // High end: a's end if it lies inside b, else b's start
-        addEnd(sb0 >= la - eps, ea, 1, eb, 0, half);
+        // Low end: a's start if it lies inside b, b's end if it lies in a
+        addEnd(sb1 <= eps, sb1 >= -eps, ea, 0, eb, 1, half);
+        // High end: a's end if it lies inside b, b's start if it lies in a
+        addEnd(sb0 >= la - eps, sb0 <= la + eps, ea, 1, eb, 0, half);
     }
 
     void addEnd
     (
-        bool aInside, int ea, int aEnd, int eb, int bEnd, double length
+        bool aInside, bool bInside, int ea, int aEnd, int eb, int bEnd,
+        double length
     )
     {
-        contactCandidate c = aInside
-          ? make(la_, edgeVertex(la_, ea, aEnd), lb_, eb)
-          : make(lb_, edgeVertex(lb_, eb, bEnd), la_, ea);
+        const double share = aInside && bInside ? 0.5*length : length;
+        if (aInside) addEnd(make(la_, edgeVertex(la_, ea, aEnd), lb_, eb), share);
+        if (bInside) addEnd(make(lb_, edgeVertex(lb_, eb, bEnd), la_, ea), share);
+    }
+
+    void addEnd(contactCandidate c, double length)
+    {
         if (admissible(c))
         {
             c.type = contactCandidate::edgeEdge;
@@ -416,7 +393,7 @@ public:
             {
                 c.type = nearCorner
                     ? contactCandidate::vertexVertex : contactCandidate::vertexEdge;
-                c.length = vertexLength(loops_[c.vertexLoop], c.vertex);
+                c.length = loops_[c.vertexLoop].tributaryLength(c.vertex);
                 out.push_back(c);
             }
         }
@@ -454,7 +431,7 @@ public:
             if (best->gap < 0 && apart) best = apart;
             contactCandidate c = *best;
             c.type = contactCandidate::vertexVertex;
-            c.length = vertexLength(loops_[c.vertexLoop], c.vertex);
+            c.length = loops_[c.vertexLoop].tributaryLength(c.vertex);
             out.push_back(c);
         }
 

@@ -435,7 +435,7 @@ vtkPointSet solidOutput::contactFrame(const nmmSolidModel& model)
     const auto patchD = model.patchDisplacements();
     const auto& loops = cm->boundaries().loops();
     std::vector<std::int32_t> state, bond;
-    std::vector<double> fn, fs, penetration, slip;
+    std::vector<double> fn, fs, penetration, slip, length;
     std::vector<Eigen::Vector2d> normal, traction;
     for (const contactRecord& r : model.state().contacts)
     {
@@ -449,6 +449,7 @@ vtkPointSet solidOutput::contactFrame(const nmmSolidModel& model)
         fs.push_back(r.shearForce);
         penetration.push_back(-r.gap);
         slip.push_back(r.slip);
+        length.push_back(r.length);
         normal.push_back(r.normal);
         const Eigen::Vector2d s(-r.normal.y(), r.normal.x());
         traction.push_back(r.normalForce*r.normal + r.shearForce*s);
@@ -459,6 +460,7 @@ vtkPointSet solidOutput::contactFrame(const nmmSolidModel& model)
     set.addPointData(vtkDataArray::scalar("shearForce", std::move(fs)));
     set.addPointData(vtkDataArray::scalar("penetration", std::move(penetration)));
     set.addPointData(vtkDataArray::scalar("slip", std::move(slip)));
+    set.addPointData(vtkDataArray::scalar("length", std::move(length)));
     set.addPointData(vtkDataArray::vector("normal", normal));
     set.addPointData(vtkDataArray::vector("force", traction));
     return set;
