@@ -347,3 +347,111 @@ class pushedBlock:
         s = max(t - t0, 0.0)
         f0 = cls.rate*t0 - cls.W*math.tan(math.radians(cls.phi))
         return (cls.rate*s**3/6 + f0*s*s/2)/cls.m
+
+
+# --------------------------------------------------------------------------
+# Contact cases loaded in steps (tutorials/verification/contact/): plane
+# strain throughout.
+# --------------------------------------------------------------------------
+
+# --------------------------------------------------------------------------
+# Hertz, cylinder on a flat (2D): contact half-width a = sqrt(4 P R/(pi E*)),
+# p(x) = p0 sqrt(1 - x^2/a^2), p0 = 2P/(pi a), 1/E* = sum (1 - nu_i^2)/E_i
+# (plane strain), P the load per unit thickness. The flat is stiff
+# (E = 1e4), not rigid; its compliance is in E*.
+# --------------------------------------------------------------------------
+class hertz:
+    R = 1.0             # cylinder radius
+    P = 0.01            # load per unit thickness [N/m]
+    E1, nu1 = 1.0, 0.3          # cylinder
+    E2, nu2 = 1e4, 0.3          # flat
+    thickness = 1.0
+
+    @classmethod
+    def Reff(cls):
+        return cls.R
+
+    @classmethod
+    def Estar(cls):
+        return 1/((1 - cls.nu1**2)/cls.E1 + (1 - cls.nu2**2)/cls.E2)
+
+    @classmethod
+    def halfWidth(cls):
+        return math.sqrt(4*cls.P*cls.Reff()/(math.pi*cls.Estar()))
+
+    @classmethod
+    def peakPressure(cls):
+        return 2*cls.P/(math.pi*cls.halfWidth())
+
+    @classmethod
+    def pressure(cls, x):
+        a = cls.halfWidth()
+        return cls.peakPressure()*np.sqrt(np.maximum(1 - (x/a)**2, 0.0))
+
+
+# Two identical discs (R1 = R2 = 1, both E = 1): R = R1 R2/(R1 + R2) = 1/2,
+# E* halved: a and p0 come out as for the cylinder on the (stiff) flat
+class discOnDisc(hertz):
+    R1 = 1.0
+    R2 = 1.0
+    E2, nu2 = 1.0, 0.3
+
+    @classmethod
+    def Reff(cls):
+        return cls.R1*cls.R2/(cls.R1 + cls.R2)
+
+
+# --------------------------------------------------------------------------
+# Brazilian disc: two opposite point loads P (per unit thickness t) on the
+# vertical diameter of a disc of diameter D (centre at the origin): the
+# superposition of two Flamant solutions and a uniform tension 2P/(pi D t)
+# (Frocht; Jaeger and Cook). At the centre sigma_x = 2P/(pi D t) (tension),
+# sigma_y = -6P/(pi D t).
+# --------------------------------------------------------------------------
+class brazilian:
+    D = 0.05
+    t = 1.0
+    P = 1e5
+    E, nu = 20e9, 0.25
+
+    @classmethod
+    def centreTension(cls):
+        return 2*cls.P/(math.pi*cls.D*cls.t)
+
+    @classmethod
+    def stress(cls, x, y):
+        R = cls.D/2
+        k = -2*cls.P/(math.pi*cls.t)
+        r1 = (x*x + (R - y)**2)**2
+        r2 = (x*x + (R + y)**2)**2
+        sxx = k*((R - y)*x*x/r1 + (R + y)*x*x/r2 - 1/cls.D)
+        syy = k*((R - y)**3/r1 + (R + y)**3/r2 - 1/cls.D)
+        sxy = -k*((R - y)**2*x/r1 - (R + y)**2*x/r2)
+        return sxx, syy, sxy
+
+
+# --------------------------------------------------------------------------
+# Bonded interface of length L (Mohr-Coulomb bond that breaks for good):
+# in tension it breaks when the normal force reaches T L; in shear under a
+# normal stress sigma_n the peak shear force is c L + sigma_n L tan(phi),
+# the residual after the break sigma_n L tan(phi). Forces per unit thickness.
+# --------------------------------------------------------------------------
+class bondedInterface:
+    L = 1.0
+    T = 1e6
+    c = 2e6
+    phi = 30.0
+    sigmas = (0.0, 1e6, 5e6)
+    stepsToPeak = 40    # load steps to the peak in the tutorials
+
+    @classmethod
+    def tensionPeak(cls):
+        return cls.T*cls.L
+
+    @classmethod
+    def shearPeak(cls, sigma):
+        return cls.c*cls.L + sigma*cls.L*math.tan(math.radians(cls.phi))
+
+    @classmethod
+    def shearResidual(cls, sigma):
+        return sigma*cls.L*math.tan(math.radians(cls.phi))

@@ -270,3 +270,52 @@ class report:
                      num(tol, "%.3g"), v))
         print("%s: %s" % (self.title, "FAILED" if self.failed else "passed"))
         return 1 if self.failed else 0
+
+
+# --------------------------------------------------------------------------
+# Contact output: VTK/contacts_<i>.vtp and VTK/contacts.vtp.series
+# --------------------------------------------------------------------------
+def readContactSeries(caseDir):
+    """[(time, path), ...] of VTK/contacts.vtp.series, in time order."""
+    path = Path(caseDir).resolve()/"VTK"/"contacts.vtp.series"
+    if not path.is_file():
+        raise SystemExit("no %s (has the case been run? does it have contacts?)"
+                         % path)
+    data = json.loads(path.read_text())
+    frames = [(float(e["time"]), path.parent/e["name"]) for e in data["files"]]
+    if not frames:
+        raise SystemExit("%s lists no files" % path)
+    frames.sort(key=lambda f: f[0])
+    return frames
+
+
+def readContacts(path):
+    """A contact frame: x (contact points), and the point data arrays
+    (contactState, bondIntact, normalForce, shearForce, penetration, slip,
+    normal, force) as numpy arrays; no points gives empty arrays."""
+    try:
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+    except ImportError as e:
+        sys.exit("%s: cannot import VTK (%s); install Debian's python3-vtk9 "
+                 "and run this with /usr/bin/python3" % (Path(sys.argv[0]).name, e))
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(str(path))
+    reader.Update()
+    poly = reader.GetOutput()
+    c = frame()
+    c.path = Path(path)
+    n = poly.GetNumberOfPoints() if poly is not None else 0
+    c.x = (vtk_to_numpy(poly.GetPoints().GetData()).astype(float)[:, :2].copy()
+           if n else np.zeros((0, 2)))
+    c.data = {}
+    pd = poly.GetPointData() if n else None
+    for i in range(pd.GetNumberOfArrays() if pd is not None else 0):
+        a = pd.GetArray(i)
+        c.data[a.GetName()] = vtk_to_numpy(a).astype(float)
+    for name in ("contactState", "bondIntact", "normalForce", "shearForce"):
+        if name not in c.data:
+            c.data[name] = np.zeros(n) if n == 0 else None
+            if n:
+                raise SystemExit("%s: no point data '%s'" % (path, name))
+    return c

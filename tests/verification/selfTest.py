@@ -15,6 +15,15 @@ Usage:
     selfTest.py checker <case> <workDir>
         checker of <case> on synthetic frames (synthetic/makeSynthetic.py):
         exit 0 on the exact solution, 1 on the tampered one
+    selfTest.py contactClosedForms
+        the closed forms of the contact cases: the numbers quoted in
+        docs/verification.md (Hertz a and p0, Brazilian 1.273 MPa), the
+        Brazilian stress field in equilibrium and traction free on the rim
+        away from the loads
+    selfTest.py contactChecker <case> <workDir>
+        checker of a contact case on synthetic output
+        (synthetic/makeSyntheticContact.py): exit 0 on the exact solution,
+        1 on the tampered one
     selfTest.py rates <workDir>
         checkCantilever.py over three synthetic refinement levels: the
         observed rates pass on exact data, fail on data with an O(h) error
@@ -272,6 +281,70 @@ def rates(workDir):
                % ("tampered" if tamper else "exact", expected, res.returncode))
 
 
+# --------------------------------------------------------------------------
+# Contact cases (docs/verification.md, Contact table)
+# --------------------------------------------------------------------------
+def contactClosedForms():
+    h = cf.hertz
+    expect(abs(h.halfWidth() - 0.1076) < 5e-5 and abs(h.peakPressure() - 0.0591) < 5e-5,
+           "hertz: a = 0.1076, p0 = 0.0591 (%.5g, %.5g)" % (h.halfWidth(), h.peakPressure()))
+    xs = np.linspace(-h.halfWidth(), h.halfWidth(), 20001)
+    load = np.trapz(h.pressure(np.abs(xs)), xs)
+    expect(abs(load - h.P)/h.P < 1e-6, "hertz: pressure integrates to P (%.8g)" % load)
+    d = cf.discOnDisc
+    expect(abs(d.Reff() - 0.5) < 1e-15 and abs(d.halfWidth() - h.halfWidth())/h.halfWidth() < 1e-3,
+           "discOnDisc: R = 1/2, a within 0.1%% of the flat's (%.5g)" % d.halfWidth())
+    b = cf.brazilian
+    expect(abs(b.centreTension() - 1.273e6)/1.273e6 < 5e-4,
+           "brazilian: 2P/(pi D t) = 1.273 MPa (%.6g)" % b.centreTension())
+    sxx, syy, sxy = b.stress(np.array([0.0]), np.array([0.0]))
+    expect(abs(sxx[0] - b.centreTension()) < 1e-6*b.centreTension()
+           and abs(sxy[0]) < 1e-9*b.centreTension(),
+           "brazilian: stress field gives the centre value")
+    rng = np.random.default_rng(2)
+    R = b.D/2
+    r = rng.uniform(0, 0.8*R, 200)
+    t = rng.uniform(0, 2*math.pi, 200)
+    fx, fy = fdDivergence(b.stress, r*np.cos(t), r*np.sin(t), 1e-7)
+    err = max(np.abs(fx).max(), np.abs(fy).max())*R/b.centreTension()
+    expect(err < 1e-5, "brazilian: div sigma = 0 (%.1e)" % err)
+    th = np.linspace(-1.2, 1.2, 50)
+    X, Y = R*np.cos(th), R*np.sin(th)
+    sxx, syy, sxy = b.stress(X, Y)
+    tx = sxx*np.cos(th) + sxy*np.sin(th)
+    ty = sxy*np.cos(th) + syy*np.sin(th)
+    err = max(np.abs(tx).max(), np.abs(ty).max())/b.centreTension()
+    expect(err < 1e-9, "brazilian: rim traction free away from the loads (%.1e)" % err)
+    bi = cf.bondedInterface
+    expect(bi.tensionPeak() == 1e6 and abs(bi.shearPeak(5e6) - (2e6 + 5e6/math.sqrt(3))) < 1e-6
+           and abs(bi.shearResidual(1e6) - 1e6/math.sqrt(3)) < 1e-6,
+           "bondedInterface: T L, c L + sigma_n L tan 30, sigma_n L tan 30")
+
+
+CONTACT_CHECKERS = {"hertz": ("checkHertz.py", ["hertz"]),
+                    "discOnDisc": ("checkHertz.py", ["discOnDisc"]),
+                    "brazilian": ("checkBrazilian.py", []),
+                    "bondedTension": ("checkBondedInterface.py", ["tension"]),
+                    "bondedShear": ("checkBondedInterface.py", ["shear", "1"])}
+
+
+def contactChecker(case, workDir):
+    import shutil
+    script, extra = CONTACT_CHECKERS[case]
+    for tamper, expected in ((False, 0), (True, 1)):
+        out = Path(workDir)/(case + ("Tampered" if tamper else "Exact"))
+        if out.exists():
+            shutil.rmtree(out)
+        gen = [sys.executable, str(HERE/"synthetic/makeSyntheticContact.py"), case, str(out)]
+        subprocess.run(gen + (["--tamper"] if tamper else []), check=True)
+        res = subprocess.run([sys.executable, str(HERE/script), str(out)] + extra,
+                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                             universal_newlines=True)
+        print(res.stdout)
+        expect(res.returncode == expected, "%s on %s data exits %d (got %d)"
+               % (script, "tampered" if tamper else "exact", expected, res.returncode))
+
+
 def main(argv):
     if not argv:
         print(__doc__)
@@ -280,6 +353,10 @@ def main(argv):
         closedForms()
     elif argv[0] == "tutorials" and len(argv) == 2:
         tutorials(argv[1])
+    elif argv[0] == "contactClosedForms":
+        contactClosedForms()
+    elif argv[0] == "contactChecker" and len(argv) == 3 and argv[1] in CONTACT_CHECKERS:
+        contactChecker(argv[1], argv[2])
     elif argv[0] == "rates" and len(argv) == 2:
         rates(argv[1])
     elif argv[0] == "checker" and len(argv) == 3 and argv[1] in CHECKERS:

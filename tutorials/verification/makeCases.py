@@ -732,6 +732,361 @@ form are reported.
 """)
 
 
+# --------------------------------------------------------------------------
+# Contact cases loaded in steps: Hertz, disc on disc, Brazilian disc, and
+# the bonded interface in tension and in shear.
+
+def contactMaterials(case, materials, planeStress=False):
+    write(case, "constant/mechanicalProperties", "constant", "mechanicalProperties",
+          """\
+planeStress     %s;
+
+thickness       1;
+
+materials
+{
+%s}
+""" % ("yes" if planeStress else "no",
+       "".join("    %s { type linearElastic; E %s; nu %s; rho %s; }\n" % m
+               for m in materials)))
+
+
+def loadStepSolution(case, analysis, contact, extra=""):
+    """nmmSolution of a case loaded in steps: static, or quasi-static
+    (dynamic with the velocity dropped at every step)."""
+    scheme = """
+// Quasi-static: DDA with the velocity dropped at every step; the mass is
+// only a soft anchor to the last position
+timeScheme      { type DDA; velocityRatio 0; }
+""" if analysis == "dynamic" else """
+// The closed form is linear elasticity: no geometry update
+largeDisplacement no;
+"""
+    write(case, "system/nmmSolution", "system", "nmmSolution", """\
+analysis        %s;
+%s
+contact
+{
+%s}
+%s
+linearSolver    { type cholmod; }
+""" % (analysis, scheme, contact, extra))
+
+
+def gradedArc(c, r, t0, t1, fine, coarse, fineLength):
+    """Points on the circle of centre c, radius r, from angle t0 to t1
+    (both ends included): chords of about 'fine' for an arc length
+    fineLength from t0, then of about 'coarse'."""
+    total = abs(t1 - t0)*r
+    sgn = 1 if t1 > t0 else -1
+    nf = max(1, int(round(min(fineLength, total)/fine)))
+    s = [min(fineLength, total)*k/nf for k in range(nf + 1)]
+    rest = total - s[-1]
+    if rest > 1e-12:
+        nc = max(1, int(math.ceil(rest/coarse)))
+        s += [s[-1] + rest*k/nc for k in range(1, nc + 1)]
+    return [(c[0] + r*math.cos(t0 + sgn*q/r), c[1] + r*math.sin(t0 + sgn*q/r))
+            for q in s]
+
+
+HERTZ = {"R": 1.0, "P": 0.01, "E": 1.0, "nu": 0.3, "Eflat": 1e4,
+         "fine": 0.005, "fineLength": 0.25, "coarse": 0.05}
+
+
+def hertzCase(c, discOnDisc):
+    """Half models (x >= 0, symmetry roller on x = 0) of a cylinder of
+    radius R pressed by P per unit thickness, static, plane strain,
+    frictionless. Upper body: the lower half of the disc of centre (0, R),
+    loaded by a uniform pressure P/(2R) on its flat top (y = R). Lower
+    body: a stiff flat (E = 1e4), or the upper half of an identical disc
+    of centre (0, -R); fixed on its bottom edge."""
+    h = HERTZ
+    R = h["R"]
+    controlDict(c, 1, 1, "Static: one step, loads evaluated at t = 1")
+    loadStepSolution(c, "static", """\
+    method                  penalty;
+    normalPenalty           auto;       // 50 x largest E
+    shearPenalty            auto;
+    // above the gap x^2/(2R) = 0.0058 at x = a before loading, small
+    // against the curvature of the chords (see ../README.md)
+    searchDistance          0.008;
+    maxOpenCloseIterations  40;
+""")
+    if discOnDisc:
+        contactMaterials(c, [("disc", h["E"], h["nu"], 1)])
+        lower = "disc"
+    else:
+        contactMaterials(c, [("cylinder", h["E"], h["nu"], 1),
+                             ("flat", h["Eflat"], h["nu"], 1)])
+        lower = "flat"
+    upperMaterial = "disc" if discOnDisc else "cylinder"
+    contactLaw(c, 0, comment="// Hertz's contact is frictionless\n")
+    # (0 R), then the arc from the contact point (0 0) to (R R)
+    upper = [(0.0, R)] + gradedArc((0.0, R), R, -math.pi/2, 0.0,
+                                   h["fine"], h["coarse"], h["fineLength"])
+    if discOnDisc:
+        arcPts = gradedArc((0.0, -R), R, math.pi/2, 0.0,
+                           h["fine"], h["coarse"], h["fineLength"])
+        # (0 0) ... (R -R) (0 -R)
+        lowerPts = arcPts + [(0.0, -R)]
+        bottom = -R
+    else:
+        bottom = -0.15
+        lowerPts = [(0.0, 0.0), (0.0, bottom), (0.4, bottom), (0.4, 0.0)]
+        # vertices of the flat's top every 'fine' near the contact
+        n = int(round(h["fineLength"]/h["fine"]))
+        lowerPts += [(h["fineLength"]*(n - k)/n, 0.0) for k in range(1, n)]
+    meshDict(c, """\
+    upper
+    {
+        material %s;
+        // quarter of the disc of centre (0 %s): chords of %s up to an
+        // arc length %s from the contact point (0 0), then of %s
+        polygon%s;
+    }
+    lower
+    {
+        material %s;
+        polygon%s;
+    }
+""" % (upperMaterial, fmt(R), h["fine"], h["fineLength"], h["coarse"],
+       polygon(upper), lower, polygon(lowerPts)), """\
+    loaded      { type box; min (-1 %s); max (2 %s); }
+    fixed       { type box; min (-2 %s); max (2 %s); }
+    symmetry    { type box; min (-1e-9 -2); max (1e-9 2); }
+""" % (fmt(R - 1e-6), fmt(R + 1e-6), fmt(bottom - 1e-6), fmt(bottom + 1e-6)), """\
+    // Fine triangles along the boundaries (the contact zone is 0.11 wide)
+    type        delaunay;
+    cellSize    0.025;
+    refineNearBoundaries { cellSize %s; distance 0.012; near blocks; }
+""" % h["fine"])
+    D(c, """\
+    // P/2 = %s on the half width R: pressure P/(2R)
+    loaded
+    {
+        type        tractionDisplacement;
+        traction    uniform (0 0 0);
+        pressure    uniform %s;
+    }
+    fixed       { type fixedValue; value uniform (0 0 0); }
+    symmetry    { type fixedNormal; }
+""" % (fmt(h["P"]/2), fmt(h["P"]/(2*R))))
+    scripts(c, "checkHertz.py")
+
+
+def hertzCylinder():
+    hertzCase("contact/hertz", False)
+
+
+def discOnDisc():
+    hertzCase("contact/discOnDisc", True)
+
+
+
+BRAZILIAN = {"D": 0.05, "P": 1e5, "E": 20e9, "nu": 0.25,
+             "Eplaten": 200e9, "platenWidth": 0.01, "platenHeight": 0.005}
+
+
+def brazilian():
+    """Quarter model of a disc of diameter D squeezed by P per unit
+    thickness through a steel platen in contact with it (frictionless,
+    static, plane strain); rollers on the symmetry lines x = 0 and y = 0."""
+    c = "contact/brazilian"
+    b = BRAZILIAN
+    R = b["D"]/2
+    w, t = b["platenWidth"], b["platenHeight"]
+    controlDict(c, 1, 1, "Static: one step, loads evaluated at t = 1")
+    loadStepSolution(c, "static", """\
+    method                  penalty;
+    normalPenalty           auto;       // 50 x largest E
+    shearPenalty            auto;
+    searchDistance          2e-4;
+    maxOpenCloseIterations  40;
+""")
+    contactMaterials(c, [("rock", b["E"], b["nu"], 2650),
+                         ("steel", b["Eplaten"], 0.3, 7850)])
+    contactLaw(c, 0, comment="// Frictionless platen\n")
+    disc = [(0.0, 0.0)] + gradedArc((0.0, 0.0), R, math.pi/2, 0.0, 2e-4, 1e-3, 2e-3)[::-1]
+    meshDict(c, """\
+    disc
+    {
+        material rock;
+        // quarter disc of radius %s: (0 0), the arc from (R 0) to (0 R)
+        // with chords of 2e-4 over 2e-3 from the loaded point
+        polygon%s;
+    }
+    platen { material steel; polygon (%s %s %s %s); }
+""" % (fmt(R), polygon(disc), pt((0, R)), pt((w, R)), pt((w, R + t)),
+       pt((0, R + t))), """\
+    loaded      { type box; min (-1 %s); max (1 1); }
+    symmetryX   { type box; min (-1e-9 -1); max (1e-9 1); }
+    symmetryY   { type box; min (-1 -1e-9); max (1 1e-9); }
+""" % fmt(R + t - 1e-9), """\
+    type        delaunay;
+    cellSize    1e-3;
+    refineNearBoundaries { cellSize 2.5e-4; distance 5e-4; near blocks; }
+""")
+    D(c, """\
+    // P/2 = %s N/m on the half platen width %s
+    loaded
+    {
+        type        tractionDisplacement;
+        traction    uniform (0 0 0);
+        pressure    uniform %s;
+    }
+    symmetryX   { type fixedNormal; }
+    symmetryY   { type fixedNormal; }
+""" % (fmt(b["P"]/2), fmt(w), fmt(b["P"]/2/w)))
+    scripts(c, "checkBrazilian.py")
+
+
+BOND = {"L": 1.0, "T": 1e6, "c": 2e6, "phi": 30.0, "stepsToPeak": 40,
+        "extraSteps": 5}
+
+
+def bondedLaw(c):
+    b = BOND
+    contactLaw(c, b["phi"], b["c"], b["T"], "bonded",
+               comment="// Blocks sharing an edge at t = 0 start bonded\n")
+
+
+def quasiStaticControls(c, nSteps, comment):
+    controlDict(c, nSteps, 1, comment)
+    # deltaT = 1: a pseudo time that counts load steps
+
+
+def bondedTension():
+    """Two blocks L x L/2 sharing the edge y = 0 (length L), bonded; the
+    lower one fixed at its bottom, the upper one pulled by a uniform
+    traction on its top that grows by T/40 a step. nu = 0: the stress is
+    uniform (sigma_yy = traction) in both blocks, so every contact carries
+    the consistent share of the load and the bond breaks everywhere at
+    once when the traction reaches T."""
+    c = "contact/bondedTension"
+    b = BOND
+    L = b["L"]
+    n = b["stepsToPeak"]
+    quasiStaticControls(c, n + b["extraSteps"],
+                        "Quasi-static: %d load steps of T/%d" % (n + b["extraSteps"], n))
+    loadStepSolution(c, "dynamic", """\
+    method                  penalty;
+    normalPenalty           auto;
+    shearPenalty            auto;
+    searchDistance          0.005;
+    maxOpenCloseIterations  20;
+""", """
+stepControl
+{
+    maxDisplacementRatio    0.1;
+    maxDeltaT               1;
+    minDeltaT               1e-6;
+}
+""")
+    # rho: after the break the free block moves F/(2 rho A/dt^2) ~ 0.01 a
+    # step; before it, the mass term is 0.5% of the blocks' stiffness
+    contactMaterials(c, [("rock", "1e10", "0", "1e8")])
+    bondedLaw(c)
+    meshDict(c, """\
+    lower { material rock; polygon ((0 %s) (%s %s) (%s 0) (0 0)); }
+    upper { material rock; polygon ((0 0) (%s 0) (%s %s) (0 %s)); }
+""" % (fmt(-L/2), fmt(L), fmt(-L/2), fmt(L), fmt(L), fmt(L), fmt(L/2), fmt(L/2)),
+             """\
+    pulled      { type box; min (-1 %s); max (2 1); }
+    fixed       { type box; min (-1 -1); max (2 %s); }
+""" % (fmt(L/2 - 1e-9), fmt(-L/2 + 1e-9)), """\
+    type        structured;
+    cellSize    0.05;
+""")
+    D(c, """\
+    // Pull: a negative pressure growing by T/%d a step
+    pulled
+    {
+        type        tractionDisplacement;
+        traction    uniform (0 0 0);
+        pressure    table ((0 0) (%d %s));
+    }
+    fixed       { type fixedValue; value uniform (0 0 0); }
+""" % (n, n, fmt(-b["T"])))
+    scripts(c, "checkBondedInterface.py")
+
+
+def bondedShear(sigmaMPa):
+    """Double shear: a middle block 1.2 L x 0.2 between a bottom block
+    (fixed at its bottom) and a top block (rollers on its sides, pressure
+    sigma_n on its top), both L long, bonded to it along y = 0 and y = 0.2
+    (two interfaces of length L). The middle block is pulled in x by a
+    traction on its right edge growing so that the shear of each interface
+    grows by a 40th of its peak c L + sigma_n L tan(phi) a step.
+    Symmetric: the pull acts on the mid-plane of the middle block, so the
+    interfaces carry no moment. The blocks are nearly rigid (E = 1e13
+    against springs of 1e9 N/m): every contact of an interface slips by the
+    same amount."""
+    c = "contact/bondedShear/sigma%d" % sigmaMPa
+    b = BOND
+    L = b["L"]
+    n = b["stepsToPeak"]
+    sn = sigmaMPa*1e6
+    h = 0.2
+    peak = b["c"]*L + sn*L*math.tan(math.radians(b["phi"]))
+    quasiStaticControls(c, n + b["extraSteps"],
+                        "Quasi-static: %d load steps of a 40th of the peak"
+                        % (n + b["extraSteps"]))
+    loadStepSolution(c, "dynamic", """\
+    method                  penalty;
+    normalPenalty           1e9;        // soft against the blocks
+    shearPenalty            4e8;
+    searchDistance          0.005;
+    maxOpenCloseIterations  20;
+""", """
+stepControl
+{
+    maxDisplacementRatio    0.1;
+    maxDeltaT               1;
+    minDeltaT               1e-6;
+}
+""")
+    contactMaterials(c, [("rock", "1e13", "0", "1e10")])
+    bondedLaw(c)
+    meshDict(c, """\
+    bottom { material rock; polygon ((0 %s) (%s %s) (%s 0) (0 0)); }
+    middle { material rock; polygon ((%s 0) (%s 0) (%s %s) (%s %s)); }
+    top    { material rock; polygon ((0 %s) (%s %s) (%s %s) (0 %s)); }
+""" % (fmt(-h), fmt(L), fmt(-h), fmt(L),
+       fmt(-0.1*L), fmt(1.1*L), fmt(1.1*L), fmt(h), fmt(-0.1*L), fmt(h),
+       fmt(h), fmt(L), fmt(h), fmt(L), fmt(2*h), fmt(2*h)), """\
+    pulled      { type box; min (%s -1e-9); max (2 %s); }
+    fixed       { type box; min (-1 -1); max (2 %s); }
+    pressed     { type box; min (-1 %s); max (2 1); }
+    topLeft     { type box; min (-1e-9 %s); max (1e-9 %s); }
+    topRight    { type box; min (%s %s); max (%s %s); }
+""" % (fmt(1.1*L - 1e-9), fmt(h + 1e-9), fmt(-h + 1e-9), fmt(2*h - 1e-9),
+       fmt(h - 1e-9), fmt(2*h + 1e-9), fmt(L - 1e-9), fmt(h - 1e-9), fmt(L + 1e-9),
+       fmt(2*h + 1e-9)), """\
+    type        structured;
+    cellSize    0.0125;
+""")
+    D(c, """\
+    // Twice the interface peak %s N/m over the height %s at step %d
+    pulled
+    {
+        type        tractionDisplacement;
+        traction    table ((0 (0 0 0)) (%d (%s 0 0)));
+        pressure    uniform 0;
+    }
+    fixed       { type fixedValue; value uniform (0 0 0); }
+    pressed
+    {
+        type        tractionDisplacement;
+        traction    uniform (0 0 0);
+        pressure    uniform %s;
+    }
+    // Rollers: the top block may move only in y
+    topLeft     { type fixedNormal; }
+    topRight    { type fixedNormal; }
+""" % (fmt(peak), fmt(h), n, n, fmt(2*peak/h), fmt(sn)))
+    scripts(c, "checkBondedInterface.py")
+
+
 if __name__ == "__main__":
     cantilever()
     plateHole()
@@ -746,3 +1101,9 @@ if __name__ == "__main__":
     for scheme in ("trapezoidal", "DDA"):
         bouncingBlock(scheme)
     pushedBlock()
+    hertzCylinder()
+    discOnDisc()
+    brazilian()
+    bondedTension()
+    for sigma in (0, 1, 5):
+        bondedShear(sigma)
