@@ -998,15 +998,16 @@ stepControl
     cellSize    0.05;
 """)
     D(c, """\
-    // Pull: a negative pressure growing by T/%d a step
+    // Pull: a negative pressure growing by T/%d a step, on past T (a
+    // load held at T exactly would leave the break to rounding)
     pulled
     {
         type        tractionDisplacement;
         traction    uniform (0 0 0);
-        pressure    table ((0 0) (%d %s));
+        pressure    table ((0 0) (%d %s) (%d %s));
     }
     fixed       { type fixedValue; value uniform (0 0 0); }
-""" % (n, n, fmt(-b["T"])))
+""" % (n, n, fmt(-b["T"]), 2*n, fmt(-2*b["T"])))
     scripts(c, "checkBondedInterface.py")
 
 
@@ -1027,6 +1028,7 @@ def bondedShear(sigmaMPa):
     n = b["stepsToPeak"]
     sn = sigmaMPa*1e6
     h = 0.2
+    cell = 0.0125
     peak = b["c"]*L + sn*L*math.tan(math.radians(b["phi"]))
     quasiStaticControls(c, n + b["extraSteps"],
                         "Quasi-static: %d load steps of a 40th of the peak"
@@ -1050,27 +1052,28 @@ stepControl
     meshDict(c, """\
     bottom { material rock; polygon ((0 %s) (%s %s) (%s 0) (0 0)); }
     middle { material rock; polygon ((%s 0) (%s 0) (%s %s) (%s %s)); }
-    top    { material rock; polygon ((0 %s) (%s %s) (%s %s) (0 %s)); }
+    top    { material rock; polygon ((0 %s) (%s %s) (%s %s) (%s %s) (0 %s) (0 %s)); }
 """ % (fmt(-h), fmt(L), fmt(-h), fmt(L),
        fmt(-0.1*L), fmt(1.1*L), fmt(1.1*L), fmt(h), fmt(-0.1*L), fmt(h),
-       fmt(h), fmt(L), fmt(h), fmt(L), fmt(2*h), fmt(2*h)), """\
+       fmt(h), fmt(L), fmt(h), fmt(L), fmt(round(h + cell, 12)), fmt(L), fmt(2*h), fmt(2*h),
+       fmt(round(h + cell, 12))), """\
     pulled      { type box; min (%s -1e-9); max (2 %s); }
     fixed       { type box; min (-1 -1); max (2 %s); }
     pressed     { type box; min (-1 %s); max (2 1); }
     topLeft     { type box; min (-1e-9 %s); max (1e-9 %s); }
     topRight    { type box; min (%s %s); max (%s %s); }
 """ % (fmt(1.1*L - 1e-9), fmt(h + 1e-9), fmt(-h + 1e-9), fmt(2*h - 1e-9),
-       fmt(h - 1e-9), fmt(2*h + 1e-9), fmt(L - 1e-9), fmt(h - 1e-9), fmt(L + 1e-9),
-       fmt(2*h + 1e-9)), """\
+       fmt(h - 1e-9), fmt(round(h + cell + 1e-9, 12)), fmt(L - 1e-9), fmt(h - 1e-9), fmt(L + 1e-9),
+       fmt(round(h + cell + 1e-9, 12))), """\
     type        structured;
-    cellSize    0.0125;
-""")
+    cellSize    %s;
+""" % fmt(cell))
     D(c, """\
     // Twice the interface peak %s N/m over the height %s at step %d
     pulled
     {
         type        tractionDisplacement;
-        traction    table ((0 (0 0 0)) (%d (%s 0 0)));
+        traction    table ((0 (0 0 0)) (%d (%s 0 0)) (%d (%s 0 0)));
         pressure    uniform 0;
     }
     fixed       { type fixedValue; value uniform (0 0 0); }
@@ -1080,10 +1083,13 @@ stepControl
         traction    uniform (0 0 0);
         pressure    uniform %s;
     }
-    // Rollers: the top block may move only in y
+    // Rollers on the lowest cell of the top block's sides: it may move
+    // only in y, held in x close to the interface's plane, so that the
+    // interface's shear puts (almost) no moment on it and the normal
+    // stress stays uniform
     topLeft     { type fixedNormal; }
     topRight    { type fixedNormal; }
-""" % (fmt(peak), fmt(h), n, n, fmt(2*peak/h), fmt(sn)))
+""" % (fmt(peak), fmt(h), n, n, fmt(2*peak/h), 2*n, fmt(4*peak/h), fmt(sn)))
     scripts(c, "checkBondedInterface.py")
 
 
