@@ -298,9 +298,23 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
         q.Fn = -a.kN*r.gap;
         q.Fs = a.shearForce0 - a.kS*a.ds;
         q.length = r.length*thickness_;
-        q.shearDisplacement = r.state == contactState::bonded ? 0 : a.ds;
+        // A slip within the touch tolerance is rounding: its sign must not
+        // turn the friction of a contact at rest
+        const bool slips = std::abs(a.ds) > settings_.touchTolerance;
+        q.shearDisplacement = r.state != contactState::bonded && slips ? a.ds : 0;
 
         contactDecision d = a.law->decide(q);
+        if
+        (
+            r.state == contactState::sliding && d.state == contactState::sliding
+         && slips && a.friction*a.ds > 0
+        )
+        {
+            // The friction load drove the vertex backwards: it overshoots
+            // the stop within the step, so the contact sticks (Shi's rule
+            // for a reversed slip) and its shear spring finds the force
+            d.state = contactState::bonded;
+        }
         if
         (
             isClosed(d.state) != isClosed(r.state)
@@ -333,7 +347,12 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
             const double change = friction - a.friction;
             if (change*a.frictionChange < 0) friction = a.friction + 0.5*change;
             a.frictionChange = friction - a.friction;
-            if (std::abs(a.frictionChange) > frictionTolerance*std::abs(friction))
+            // A contact that barely touches has a friction load of the
+            // size of rounding: it is measured against the force of a
+            // spring compressed by the touch tolerance
+            const double scale =
+                std::max(std::abs(friction), a.kN*settings_.touchTolerance);
+            if (std::abs(a.frictionChange) > frictionTolerance*scale)
             {
                 ++counts.frictionUpdates;
             }
@@ -363,7 +382,12 @@ double contactModel::maxPenetrationGrowth() const
     double p = 0;
     for (const active& a : active_)
     {
-        if (isClosed(a.record.state) && a.dn < 0) p = std::max(p, -a.record.gap);
+        // A contact that creeps deeper step by step is not the step's
+        // doing: cutting it would not help
+        if (isClosed(a.record.state) && a.dn < -settings_.overlapRelief)
+        {
+            p = std::max(p, -a.record.gap);
+        }
     }
     return p;
 }
