@@ -3,6 +3,7 @@
 
     series = readSeries(caseDir)        # [(time, path), ...] time order
     f = readFrame(path)                 # a frame: numpy arrays
+    c = readContacts(path)              # its contacts: numpy arrays
 
 A frame holds the deformed points x, the point data D, U, sigma, the
 polygons (lists of point indices) and the cell data. Undeformed positions
@@ -87,6 +88,31 @@ def readFrame(path):
     f.U = f.pointData["U"][:, :2] if "U" in f.pointData else None
     f.cellCentroid, f.cellArea = polygonCentroids(f.X, f.cells)
     return f
+
+
+def readContacts(vtu):
+    """The contacts file of a frame (VTK/contacts_<index>.vtp next to
+    <case>_<index>.vtu) as {point data name: numpy array}, plus 'x' (the
+    contact points); None if the frame has no contacts file."""
+    index = Path(vtu).stem.rsplit("_", 1)[1]
+    path = Path(vtu).parent/("contacts_%s.vtp" % index)
+    if not path.is_file():
+        return None
+    importVtk()
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(str(path))
+    reader.Update()
+    grid = reader.GetOutput()
+    data = {}
+    if grid.GetNumberOfPoints():
+        data["x"] = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)[:, :2]
+    pd = grid.GetPointData()
+    for i in range(pd.GetNumberOfArrays()):
+        a = pd.GetArray(i)
+        data[a.GetName()] = vtk_to_numpy(a).astype(float)
+    return data
 
 
 def polygonCentroids(X, cells):

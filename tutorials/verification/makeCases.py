@@ -69,9 +69,10 @@ def write(case, rel, location, obj, body, cls="dictionary"):
     path.write_text(header(location, obj, cls) + body + FOOTER)
 
 
-def controlDict(case, endTime, deltaT, comment, writeInterval=None, adjust=False):
+def controlDict(case, endTime, deltaT, comment, writeInterval=None, adjust=False,
+                functions=""):
     """Every step written (writeInterval None), or every writeInterval of
-    run time on adjusted steps"""
+    run time on adjusted steps; functions: the entries of 'functions'"""
     write(case, "system/controlDict", "system", "controlDict", """\
 // %s
 application     nmmSolidFoam;
@@ -106,10 +107,11 @@ adjustTimeStep  %s;
 
 functions
 {
-}
+%s}
 """ % (comment, endTime, deltaT,
        "timeStep" if writeInterval is None else "adjustableRunTime",
-       1 if writeInterval is None else writeInterval, "yes" if adjust else "no"))
+       1 if writeInterval is None else writeInterval, "yes" if adjust else "no",
+       functions))
 
 
 def staticSolution(case, smallDisplacement=False):
@@ -148,6 +150,16 @@ boundaryField
 {
 %s}
 """ % patches, cls="volVectorField")
+
+
+def U(case, internalField, comment=""):
+    """The initial velocity (0/U): internalField's text, e.g.
+    'uniform (20 0 0)' or 'expression "vector(-y, x, 0)"'"""
+    write(case, "0/U", "0", "U", comment + """\
+dimensions      [0 1 -1 0 0 0 0];
+
+internalField   %s;
+""" % internalField, cls="volVectorField")
 
 
 def contactProperties(case, frictionAngle, comment=""):
@@ -488,8 +500,8 @@ def readme(case, text):
 
 
 def dynamicControlDict(case, endTime, deltaT, writeInterval, comment,
-                       adjust=False):
-    controlDict(case, endTime, deltaT, comment, writeInterval, adjust)
+                       adjust=False, functions=""):
+    controlDict(case, endTime, deltaT, comment, writeInterval, adjust, functions)
 
 
 def gravity(case, gx, gy, comment=""):

@@ -26,6 +26,7 @@ Usage
 #include "nmmSolid/global/signals/stopSignals.H"
 #include "nmmSolid/boundary/boundaryConditions/boundaryConditions.H"
 #include "nmmSolid/boundary/gravity/gravity.H"
+#include "nmmSolid/boundary/initialVelocity/initialVelocity.H"
 #include "nmmSolid/contact/contactProperties/contactProperties.H"
 #include "nmmSolid/contact/mohrCoulomb/mohrCoulomb.H"
 #include "nmmSolid/functionObjects/functionObjectList/functionObjectList.H"
@@ -57,6 +58,7 @@ Case layout (as in OpenFOAM):
     system/nmmSolution      analysis type, contact, step control
     constant/mechanicalProperties, constant/contactProperties
     0/D                     boundary conditions
+    0/U                     initial velocity (optional; dynamic analyses)
 
 Output goes to time directories (each with uniform/time, written
 atomically) and to VTK/. "startFrom latestTime;" restarts from the newest
@@ -80,6 +82,7 @@ nmm::argList makeArgList()
     args.addKeywordHelp("system/controlDict", nmm::Time::keywords());
     args.addKeywordHelp("system/nmmSolution", nmm::solutionControls::keywords());
     args.addKeywordHelp("0/D, each patch of boundaryField", nmm::boundaryConditions::keywords());
+    args.addKeywordHelp("0/U", nmm::initialVelocity::keywords());
     args.addKeywordHelp("constant/g", nmm::gravity::keywords());
     args.addKeywordHelp("constant/contactProperties", nmm::contactProperties::keywords());
     args.addKeywordHelp
@@ -301,6 +304,10 @@ int run(int argc, char* argv[])
         runTime.printExecutionTime(std::cout);
     }
 
+    // A lower bound of the condition number: 1e16 over it is roughly the
+    // relative accuracy left to the solution
+    std::cout << "Largest pivot ratio (largest/smallest pivot of a"
+        " factorisation): " << model->largestPivotRatio() << '\n';
     model->printTiming(std::cout);
     std::cout << "End\n" << std::endl;
     return 0;

@@ -2,6 +2,7 @@
 
 #include "nmmSolid/global/clock/cpuTime.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
+#include "nmmSolid/io/dictionary/IOerror.H"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
@@ -110,6 +111,8 @@ void nmmSolidModel::createContacts()
     }
     contactModel::settings s;
     s.normalPenalty = cs.normalPenalty.value_or(50*largestModulus);
+    largestModulus_ = largestModulus;
+    normalPenalty_ = s.normalPenalty;
     s.shearPenalty = cs.shearPenalty.value_or(s.normalPenalty/2.5);
     s.searchDistance = cs.searchDistance.value_or(2.5*sc.maxDisplacementRatio*halfSize_);
     s.touchTolerance = 1e-6*s.searchDistance;
@@ -193,6 +196,33 @@ Eigen::VectorXd nmmSolidModel::solveSystem
     }
     catch (const singularSystem& err)
     {
+        // The mass term makes a dynamic system positive definite in exact
+        // arithmetic: a zero pivot there is rounding, not a free block
+        if (parts_.scheme.dynamic())
+        {
+            std::ostringstream os;
+            os << "the system of the step to time " << state_.time + dt
+                << " is too badly conditioned to factorise: a pivot of"
+                " unknown " << err.dof() << " (block '" << blockOfUnknown(err.dof())
+                << "') vanished against its diagonal";
+            if (largestPivotRatio_ > 0)
+            {
+                os << " (largest/smallest pivot so far " << largestPivotRatio_ << ')';
+            }
+            os << ". Inertia holds every block of a dynamic analysis, so this"
+                " is rounding: ";
+            if (contacts_)
+            {
+                os << "the normal penalty " << normalPenalty_ << " is "
+                    << normalPenalty_/largestModulus_ << " times the largest"
+                    " modulus; lower normalPenalty (system/nmmSolution contact)";
+            }
+            else
+            {
+                os << "check the moduli against each other and the time step";
+            }
+            throw fatalError(os.str());
+        }
         throw fatalError
         (
             "block '" + blockOfUnknown(err.dof()) + "' is free to move: the "
@@ -203,6 +233,7 @@ Eigen::VectorXd nmmSolidModel::solveSystem
         );
     }
     timing_["factorisation"] += clock.elapsed();
+    checkConditioning(dt);
 
     clock = cpuTime();
     Eigen::VectorXd dd = parts_.solver->solve(f);
@@ -285,6 +316,48 @@ bool nmmSolidModel::solveWithContacts
     }
     report.cutReason = why.str();
     return report.cutReason.empty();
+}
+
+
+void nmmSolidModel::checkConditioning(double dt)
+{
+    constexpr double limit = 1e12;
+    const double ratio = parts_.solver->pivotRatio();
+    largestPivotRatio_ = std::max(largestPivotRatio_, ratio);
+    if (conditioningReported_ || !(ratio > limit) || !log_) return;
+    conditioningReported_ = true;
+    *log_ << "    warning: badly conditioned system in the step to time "
+        << state_.time + dt << ": largest/smallest pivot " << ratio
+        << " > " << limit << ", about "
+        << std::max(0, int(std::floor(-std::log10(ratio*1e-16))))
+        << " significant digits left";
+    if (contacts_)
+    {
+        *log_ << "; normal penalty " << normalPenalty_ << " is "
+            << normalPenalty_/largestModulus_ << " times the largest modulus "
+            << largestModulus_;
+    }
+    *log_ << " (reported once)\n";
+}
+
+
+void nmmSolidModel::setInitialVelocity(const initialVelocity& U)
+{
+    if (!U.active()) return;
+    if (!parts_.scheme.dynamic())
+    {
+        throw IOerror("an initial velocity is given, but the analysis is"
+            " static (system/nmmSolution): remove the U file or use a"
+            " dynamic analysis", U.where(), "internalField");
+    }
+    // The nodal value of each unknown: exact for linear fields, which the
+    // patches' weight functions reproduce
+    const auto& pc = *parts_.elements;
+    for (std::size_t u = 0; u < pc.unknownPatches().size(); ++u)
+    {
+        const label p = pc.unknownPatches()[u];
+        state_.V.segment<2>(2*u) = U.value(parts_.cover->nodes()[pc.patches()[p].node]);
+    }
 }
 
 

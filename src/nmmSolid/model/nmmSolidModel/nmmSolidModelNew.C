@@ -151,7 +151,12 @@ std::unique_ptr<nmmSolidModel> nmmSolidModel::New
 
     p.contacts = readContacts(runCase, *p.geometry, *p.properties, *p.controls);
 
-    return std::make_unique<nmmSolidModel>(std::move(p));
+    auto model = std::make_unique<nmmSolidModel>(std::move(p));
+    model->setInitialVelocity
+    (
+        initialVelocity::read(runCase.timePath(startTimeName)/"U")
+    );
+    return model;
 }
 
 } // End namespace nmm

@@ -139,6 +139,7 @@ void linearSolver::checkPivots
     const Eigen::VectorXd& diagK
 ) const
 {
+    pivotRatio_ = 0;
     for (long k = 0; k < d.size(); ++k)
     {
         const long dof = originalDof[k];
@@ -150,6 +151,7 @@ void linearSolver::checkPivots
             throw singular(dof, d(k), diagK(dof));
         }
     }
+    if (d.size()) pivotRatio_ = d.maxCoeff()/d.minCoeff();
 }
 
 } // End namespace nmm
