@@ -222,7 +222,7 @@ def restingBlock(work, rep):
         r = execute(case)
         name = "kn/E %g" % ratio
         common(r, name, rep)
-        c = nf.readContacts(nf.readSeries(case)[-1][1])
+        c = nf.contactsOfFrame(nf.readSeries(case)[-1][1])
         closed = c["contactState"] > 0
         n = int(closed.sum())
         rep.relative("%s: sum of normal forces / W" % name,
@@ -282,7 +282,7 @@ def inclinePenalty(work, rep):
             rep.upper("%s: run stopped (exit code %d): %s" % (name, r, stopReason(case)), 1, 0)
             continue
         common(r, name, rep)
-        c = nf.readContacts(nf.readSeries(case)[-1][1])
+        c = nf.contactsOfFrame(nf.readSeries(case)[-1][1])
         closed = c["contactState"] > 0
         n = int(closed.sum())
         rep.relative("%s: sum of normal forces / (W cos a)" % name,

@@ -90,29 +90,13 @@ def readFrame(path):
     return f
 
 
-def readContacts(vtu):
-    """The contacts file of a frame (VTK/contacts_<index>.vtp next to
-    <case>_<index>.vtu) as {point data name: numpy array}, plus 'x' (the
-    contact points); None if the frame has no contacts file."""
+def contactsOfFrame(vtu):
+    """The point data of the contacts file of a frame (VTK/contacts_<index>
+    .vtp next to <case>_<index>.vtu) as {name: numpy array} (readContacts);
+    None if the frame has no contacts file."""
     index = Path(vtu).stem.rsplit("_", 1)[1]
     path = Path(vtu).parent/("contacts_%s.vtp" % index)
-    if not path.is_file():
-        return None
-    importVtk()
-    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    reader = vtkXMLPolyDataReader()
-    reader.SetFileName(str(path))
-    reader.Update()
-    grid = reader.GetOutput()
-    data = {}
-    if grid.GetNumberOfPoints():
-        data["x"] = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)[:, :2]
-    pd = grid.GetPointData()
-    for i in range(pd.GetNumberOfArrays()):
-        a = pd.GetArray(i)
-        data[a.GetName()] = vtk_to_numpy(a).astype(float)
-    return data
+    return readContacts(path).data if path.is_file() else None
 
 
 def polygonCentroids(X, cells):
