@@ -967,6 +967,18 @@ def quasiStaticControls(c, nSteps, comment):
     # deltaT = 1: a pseudo time that counts load steps
 
 
+# Load steps of deltaT 1 (a counter); a block that breaks free may move
+# far in one step
+LOAD_STEP_CONTROL = """
+stepControl
+{
+    maxDisplacementRatio    0.1;
+    maxDeltaT               1;
+    minDeltaT               1e-6;
+}
+"""
+
+
 def bondedTension():
     """Two blocks L x L/2 sharing the edge y = 0 (length L), bonded; the
     lower one fixed at its bottom, the upper one pulled by a uniform
@@ -986,14 +998,7 @@ def bondedTension():
     shearPenalty            auto;
     searchDistance          0.005;
     maxOpenCloseIterations  20;
-""", """
-stepControl
-{
-    maxDisplacementRatio    0.1;
-    maxDeltaT               1;
-    minDeltaT               1e-6;
-}
-""")
+""", LOAD_STEP_CONTROL)
     # rho: after the break the free block moves F/(2 rho A/dt^2) ~ 0.01 a
     # step; before it, the mass term is 0.5% of the blocks' stiffness
     contactMaterials(c, [("rock", "1e10", "0", "1e8")])
@@ -1051,14 +1056,7 @@ def bondedShear(sigmaMPa):
     shearPenalty            4e8;
     searchDistance          0.005;
     maxOpenCloseIterations  20;
-""", """
-stepControl
-{
-    maxDisplacementRatio    0.1;
-    maxDeltaT               1;
-    minDeltaT               1e-6;
-}
-""")
+""", LOAD_STEP_CONTROL)
     contactMaterials(c, [("rock", "1e13", "0", "1e10")])
     bondedLaw(c)
     meshDict(c, """\

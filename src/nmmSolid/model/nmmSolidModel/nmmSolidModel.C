@@ -112,7 +112,6 @@ void nmmSolidModel::createContacts()
     contactModel::settings s;
     s.normalPenalty = cs.normalPenalty.value_or(50*largestModulus);
     largestModulus_ = largestModulus;
-    normalPenalty_ = s.normalPenalty;
     s.shearPenalty = cs.shearPenalty.value_or(s.normalPenalty/2.5);
     s.searchDistance = cs.searchDistance.value_or(2.5*sc.maxDisplacementRatio*halfSize_);
     s.touchTolerance = 1e-6*s.searchDistance;
@@ -213,9 +212,8 @@ Eigen::VectorXd nmmSolidModel::solveSystem
                 " is rounding: ";
             if (contacts_)
             {
-                os << "the normal penalty " << normalPenalty_ << " is "
-                    << normalPenalty_/largestModulus_ << " times the largest"
-                    " modulus; lower normalPenalty (system/nmmSolution contact)";
+                os << penaltyAgainstModulus()
+                    << "; lower normalPenalty (system/nmmSolution contact)";
             }
             else
             {
@@ -331,13 +329,18 @@ void nmmSolidModel::checkConditioning(double dt)
         << " > " << limit << ", about "
         << std::max(0, int(std::floor(-std::log10(ratio*1e-16))))
         << " significant digits left";
-    if (contacts_)
-    {
-        *log_ << "; normal penalty " << normalPenalty_ << " is "
-            << normalPenalty_/largestModulus_ << " times the largest modulus "
-            << largestModulus_;
-    }
+    if (contacts_) *log_ << "; " << penaltyAgainstModulus();
     *log_ << " (reported once)\n";
+}
+
+
+std::string nmmSolidModel::penaltyAgainstModulus() const
+{
+    const double penalty = contacts_->parameters().normalPenalty;
+    std::ostringstream os;
+    os << "the normal penalty " << penalty << " is " << penalty/largestModulus_
+        << " times the largest modulus " << largestModulus_;
+    return os.str();
 }
 
 
