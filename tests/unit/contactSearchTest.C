@@ -266,6 +266,51 @@ TEST(contactSearch, fig5ObtuseReflex)
 }
 
 
+// A grain's sharp corner pressed 1e-3 into a flat floor, 6e-3 from one of
+// the floor's cut points: the floor's vertex lies just outside the grain
+// (a positive gap against the grain's flatter face), yet the grain's
+// corner is inside the floor and is the contact, against the floor piece
+// it lies above
+TEST(contactSearch, cornerPressedIntoAFloorNextToAFloorVertex)
+{
+    const double d = 0.0075, p = 1e-3;
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0}, {0.02, 0}, {0, 0}, {-0.02, 0}, {-0.5, 0}}),
+        loop(1, {{-0.006, -p}, {0.03, 0.014}, {0, 0.03}, {-0.016, 0.01}})
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_EQ(c.size(), 1u);
+    EXPECT_EQ(c[0].vertexLoop, 1); EXPECT_EQ(c[0].vertex, 0);
+    EXPECT_EQ(c[0].edgeLoop, 0); EXPECT_EQ(c[0].edge, 4);      // (0, 0) to (-0.02, 0)
+    EXPECT_NEAR(c[0].gap, -p, 1e-12);
+    EXPECT_NEAR(c[0].t, 0.3, 1e-12);
+    EXPECT_EQ(c[0].type, contactCandidate::vertexVertex);
+}
+
+
+// A grain's bottom corner cut into two vertices 1e-4 apart (a short edge
+// that points steeply down) 3e-3 above a flat floor. The floor's vertex
+// 6.4e-3 to the right is behind that short edge's extended line, but past
+// its end and outside the grain: no contact may report a penetration
+TEST(contactSearch, vertexPastAShortEdgeIsNotInside)
+{
+    const double d = 0.0075;
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0}, {0.0232, 0}, {0.0065, 0}, {-0.0102, 0}, {-0.5, 0}}),
+        loop(1, {{0, 0.003}, {0.0001, 0.00294}, {0.03, 0.006}, {0, 0.03}, {-0.02, 0.02}})
+    };
+    const auto c = contactSearch(d).find(loops);
+    ASSERT_FALSE(c.empty());
+    for (const auto& k : c)
+    {
+        EXPECT_GT(k.gap, 0) << "vertex " << k.vertex << " of loop " << k.vertexLoop
+            << " against edge " << k.edge << " of loop " << k.edgeLoop;
+    }
+}
+
+
 TEST(contactSearch, grainInAHole)
 {
     const double d = 0.1, g = 0.05;

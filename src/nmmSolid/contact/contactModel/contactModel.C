@@ -232,7 +232,17 @@ void contactModel::carryHistory(const std::vector<contactRecord>& history, bool 
             r.state = touching || a.gap0 < 0 ? contactState::bonded : contactState::open;
             r.bondIntact = cemented && a.law->hasBondStrength();
         }
-        if (!old || !isClosed(old->state))
+        if (old && isClosed(old->state) && old->edge != r.edge)
+        {
+            // A closed contact that moved onto the next edge is measured
+            // against that edge's line from now on; near a corner that
+            // line can report a much deeper penetration than the step
+            // ended with. It is pushed out from where it was
+            const double limit = std::min(old->gap, 0.0) - settings_.overlapRelief;
+            a.relieved = a.gap0 < limit;
+            a.gap0 = std::max(a.gap0, limit);
+        }
+        else if (!old || !isClosed(old->state))
         {
             // A contact that overlaps without having been closed (the
             // search missed it) is pushed out by at most overlapRelief per

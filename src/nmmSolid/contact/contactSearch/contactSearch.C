@@ -109,8 +109,34 @@ double fit(const contactLoop& vl, int v, const contactLoop& el, int e)
 }
 
 
-//- Gap and projection of vertex v of loop vl against edge e of loop el;
-//  returns the distance to the segment
+//- A point against an edge's line: the projection parameter t (not
+//  clamped: outside [0, 1] past an end), the signed distance along the
+//  outward normal, and the distance to the segment
+struct projection
+{
+    double t = 0;
+    double gap = 0;
+    double distance = std::numeric_limits<double>::infinity();
+};
+
+projection projectOn(const vec& x, const contactLoop& el, int e)
+{
+    const vec& a = el.edgeStart(e).x;
+    const vec& b = el.edgeEnd(e).x;
+    const vec s = b - a;
+    const double l2 = s.squaredNorm();
+    projection p;
+    // A degenerate edge has no direction, hence no side
+    if (l2 == 0) return p;
+    p.t = (x - a).dot(s)/l2;
+    p.gap = (x - a).dot(outwardNormal(a, b));
+    p.distance = (x - (a + std::clamp(p.t, 0.0, 1.0)*s)).norm();
+    return p;
+}
+
+
+//- Gap and projection of the candidate's vertex against its edge; returns
+//  the distance to the segment
 double project
 (
     const std::vector<contactLoop>& loops,
@@ -118,20 +144,10 @@ double project
 )
 {
     const vec& x = loops[c.vertexLoop].vertices[c.vertex].x;
-    const vec& a = loops[c.edgeLoop].edgeStart(c.edge).x;
-    const vec& b = loops[c.edgeLoop].edgeEnd(c.edge).x;
-    const vec s = b - a;
-    const double l2 = s.squaredNorm();
-    if (l2 == 0)
-    {
-        // A degenerate edge has no direction, hence no side
-        c.t = 0;
-        c.gap = 0;
-        return std::numeric_limits<double>::infinity();
-    }
-    c.t = std::clamp((x - a).dot(s)/l2, 0.0, 1.0);
-    c.gap = (x - a).dot(outwardNormal(a, b));
-    return (x - (a + c.t*s)).norm();
+    const projection p = projectOn(x, loops[c.edgeLoop], c.edge);
+    c.t = std::clamp(p.t, 0.0, 1.0);
+    c.gap = p.gap;
+    return p.distance;
 }
 
 
@@ -248,11 +264,63 @@ class pairSearch
         return c;
     }
 
-    //- Distance and side conditions every kept contact satisfies
+    //- Distance and side conditions every kept contact satisfies; a
+    //  vertex behind the edge's line must also be inside the edge's body
+    //  (past the end of an edge, or beside an acute corner, the line says
+    //  nothing)
     bool admissible(contactCandidate& c) const
     {
         const double dist = project(loops_, c);
-        return dist <= d_ && c.gap >= -d_;
+        if (dist > d_ || c.gap < -d_) return false;
+        return c.gap >= 0 || inside(c);
+    }
+
+    //- The edge next to e across its start (side 0) or end (side 1),
+    //  skipping zero-length edges; -1 past the end of an open loop
+    int neighbour(const contactLoop& el, int e, int side) const
+    {
+        const int n = int(el.nEdges());
+        for (int step = 1; step < n; ++step)
+        {
+            const int k = side ? e + step : e - step;
+            if (!el.closed && (k < 0 || k >= n)) return -1;
+            const int m = (k%n + n)%n;
+            if ((el.edgeEnd(m).x - el.edgeStart(m).x).squaredNorm() > 0) return m;
+        }
+        return -1;
+    }
+
+    //- Whether the candidate's vertex lies inside the edge loop's body,
+    //  judged at the boundary feature nearest to it: from the candidate's
+    //  edge, step to a neighbouring edge while that is closer. Nearest to
+    //  an edge's inside, its gap decides; nearest to a vertex, the vertex
+    //  is inside a convex corner behind both its edges' lines and inside a
+    //  reflex one behind either
+    bool inside(const contactCandidate& c) const
+    {
+        const contactLoop& el = loops_[c.edgeLoop];
+        const vec& x = loops_[c.vertexLoop].vertices[c.vertex].x;
+        int e = c.edge;
+        projection here = projectOn(x, el, e);
+        for (std::size_t step = 0; step < el.nEdges(); ++step)
+        {
+            const int side = here.t > 0.5;
+            const int k = neighbour(el, e, side);
+            if (k < 0) return here.gap < 0;
+            const projection there = projectOn(x, el, k);
+            if (there.distance < here.distance)
+            {
+                e = k;
+                here = there;
+                continue;
+            }
+            if (here.t > 0 && here.t < 1) return here.gap < 0;
+            const int w = side ? edgeVertex(c.edgeLoop, e, 1) : e;
+            return reflex(c.edgeLoop, w)
+                ? here.gap < 0 || there.gap < 0
+                : here.gap < 0 && there.gap < 0;
+        }
+        return here.gap < 0;
     }
 
     //- Edge-to-edge: one contact at each end of the overlap of two
@@ -308,18 +376,74 @@ class pairSearch
         }
     }
 
-    //- The member whose vertex lies furthest on the outer side of its
-    //  edge's line, if any does: the corners are then apart
-    template<class It>
-    static const contactCandidate* separating(It first, It last)
+    //- Distance from the candidate's vertex to its edge (segment)
+    double segmentDistance(const contactCandidate& c) const
     {
-        const contactCandidate* best = nullptr;
+        contactCandidate k = c;
+        return project(loops_, k);
+    }
+
+    //- Of the members that pass the filter, the best fit. Fits within
+    //  sin(angleTolerance) of the best are equal (the edges at a flat
+    //  corner): of those, the edge the vertex projects onto, closest
+    //  first, so that the force acts where the vertex is and not at the
+    //  end of the neighbouring edge; then the lowest key. Null when none
+    //  passes
+    template<class It, class Filter>
+    const contactCandidate* bestFit(It first, It last, Filter pass) const
+    {
+        double top = -2;
         for (auto m = first; m != last; ++m)
         {
             const contactCandidate& c = m->second;
-            if (c.gap > 0 && (!best || c.gap > best->gap)) best = &c;
+            if (pass(c)) top = std::max(top, fitOf(c));
+        }
+        const contactCandidate* best = nullptr;
+        double bestDistance = 0;
+        for (auto m = first; m != last; ++m)
+        {
+            const contactCandidate& c = m->second;
+            if (!pass(c) || fitOf(c) < top - std::sin(angleTolerance_)) continue;
+            const double dist = segmentDistance(c);
+            if (!best || dist < bestDistance || (dist == bestDistance && c < *best))
+            {
+                best = &c;
+                bestDistance = dist;
+            }
         }
         return best;
+    }
+
+    double fitOf(const contactCandidate& c) const
+    {
+        return fit(loops_[c.vertexLoop], c.vertex, loops_[c.edgeLoop], c.edge);
+    }
+
+    //- The candidate kept for a vertex-to-vertex group (see Description)
+    template<class It>
+    const contactCandidate* cornerContact(It first, It last) const
+    {
+        const contactCandidate* best =
+            bestFit(first, last, [](const contactCandidate&) { return true; });
+        if (best->gap >= 0 && fitOf(*best) >= -std::sin(angleTolerance_))
+        {
+            return best;
+        }
+        // Every admissible negative gap is a vertex inside the other body.
+        // It is pushed out through the nearest face: the deepest line of a
+        // corner it went past would throw it out with a force many times
+        // the real one
+        double shallowest = -std::numeric_limits<double>::infinity();
+        for (auto m = first; m != last; ++m)
+        {
+            if (m->second.gap < 0) shallowest = std::max(shallowest, m->second.gap);
+        }
+        const double tie = 1e-6*d_;
+        const contactCandidate* in = bestFit(first, last, [&](const contactCandidate& c)
+        {
+            return c.gap < 0 && c.gap >= shallowest - tie;
+        });
+        return in ? in : best;
     }
 
 public:
@@ -414,22 +538,7 @@ public:
             {
                 continue;
             }
-            const contactCandidate* best = nullptr;
-            double bestFit = -2;
-            for (auto m = members.first; m != members.second; ++m)
-            {
-                const contactCandidate& c = m->second;
-                const double f =
-                    fit(loops_[c.vertexLoop], c.vertex, loops_[c.edgeLoop], c.edge);
-                if (f > bestFit || (f == bestFit && c < *best))
-                {
-                    best = &c;
-                    bestFit = f;
-                }
-            }
-            const contactCandidate* apart = separating(members.first, members.second);
-            if (best->gap < 0 && apart) best = apart;
-            contactCandidate c = *best;
+            contactCandidate c = *cornerContact(members.first, members.second);
             c.type = contactCandidate::vertexVertex;
             c.length = loops_[c.vertexLoop].tributaryLength(c.vertex);
             out.push_back(c);
