@@ -253,7 +253,30 @@ void contactModel::carryHistory(const std::vector<contactRecord>& history, bool 
         }
         a.shearForce0 = isClosed(r.state) ? r.shearForce : 0;
         a.friction = r.state == contactState::sliding ? r.shearForce : 0;
+        capStuckShearForce(a);
     }
+}
+
+
+void contactModel::capStuckShearForce(active& a) const
+{
+    // A stuck contact's spring force can start a step outside the friction
+    // cone: its normal force changed with the search (another edge, another
+    // tributary length, a relieved overlap) while its shear force was
+    // carried. Left there, the spring and the friction that would replace
+    // it point against the slip in turn, and the open-close iteration
+    // swaps the two states for ever. The force is returned to the cone
+    // (an intact bond's strength is left to the law, which breaks it)
+    const contactRecord& r = a.record;
+    if (r.state != contactState::bonded || r.bondIntact) return;
+    contactQuery q;
+    q.state = r.state;
+    q.gap = a.gap0;
+    q.Fn = -a.kN*a.gap0;
+    q.Fs = a.shearForce0;
+    q.length = r.length*thickness_;
+    const contactDecision d = a.law->decide(q);
+    if (d.state == contactState::sliding) a.shearForce0 = d.frictionForce;
 }
 
 
@@ -322,8 +345,25 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
         {
             // The friction load drove the vertex backwards: it overshoots
             // the stop within the step, so the contact sticks (Shi's rule
-            // for a reversed slip) and its shear spring finds the force
+            // for a reversed slip). It stops where the slip reversed, at
+            // the step's start, with the friction force in its spring: the
+            // spring force the step started with may lie outside the cone
+            // the step ends with, and would make it slide again
             d.state = contactState::bonded;
+            a.shearForce0 = a.friction;
+            a.locked = true;
+        }
+        else if
+        (
+            a.locked && r.state == contactState::bonded
+         && d.state == contactState::sliding
+         && std::abs(q.Fs) <= (1 + frictionTolerance)*std::abs(d.frictionForce)
+        )
+        {
+            // Locked at the friction force, it stays within the friction
+            // tolerance of the cone rather than slide and reverse again
+            d.state = contactState::bonded;
+            d.frictionForce = 0;
         }
         if
         (
