@@ -311,6 +311,38 @@ TEST(contactSearch, vertexPastAShortEdgeIsNotInside)
 }
 
 
+// A grain's bottom face cut into three pieces by the cover, then a steep
+// face up to the right; another grain's apex 1e-6 into the bottom face
+// near its left end (a settling pile). Behind the steep face's line the
+// apex is 3.7e-3 deep, within the search distance of that face, and
+// inside the grain: the contact must still be as deep as the apex is into
+// the grain, not as deep as that line says (which put 600 J into one
+// spring of a 500-grain pile)
+TEST(contactSearch, depthIsMeasuredFromTheNearestFace)
+{
+    const double d = 0.0075, depth = 1e-6;
+    const std::vector<contactLoop> loops
+    {
+        loop(0, {{0, 0}, {0.002, 0}, {0.0045, 0}, {0.0047, 0}, {0.006, 0.0025},
+                 {0.011, 0.011}, {0.004, 0.02}, {-0.006, 0.01}}),
+        loop(1, {{-0.01, -0.01}, {0.01, -0.01}, {0.0005, depth}})
+    };
+    const auto c = contactSearch(d).find(loops);
+    bool apexOnBottom = false;
+    for (const auto& k : c)
+    {
+        EXPECT_GT(k.gap, -depth*(1 + 1e-6)) << "vertex " << k.vertex << " of loop "
+            << k.vertexLoop << " against edge " << k.edge << " of loop " << k.edgeLoop;
+        if (k.vertexLoop == 1 && k.vertex == 2 && k.edge == 0)
+        {
+            apexOnBottom = true;
+            EXPECT_NEAR(k.gap, -depth, 1e-12);
+        }
+    }
+    EXPECT_TRUE(apexOnBottom);
+}
+
+
 TEST(contactSearch, grainInAHole)
 {
     const double d = 0.1, g = 0.05;

@@ -51,6 +51,16 @@ vec tangentOf(const contactLoop& l, int e)
 }
 
 
+double distanceToEdge(const vec& x, const contactLoop& l, int e)
+{
+    const vec& a = l.edgeStart(e).x;
+    const vec ab = l.edgeEnd(e).x - a;
+    const double t = ab.squaredNorm() > 0
+        ? std::clamp((x - a).dot(ab)/ab.squaredNorm(), 0.0, 1.0) : 0.0;
+    return (a + t*ab - x).norm();
+}
+
+
 //- Sum of coefficient x dd over the terms
 double along(const std::vector<std::pair<int, double>>& t, const Eigen::VectorXd& dd)
 {
@@ -208,12 +218,24 @@ void contactModel::carryHistory(const std::vector<contactRecord>& history, bool 
         contactRecord& r = a.record;
         const contactRecord* old = nullptr;
         const auto range = byVertex.equal_range({r.vertexLoop, r.vertex, r.edgeLoop});
-        const int n = int(loops[r.edgeLoop].nEdges());
+        // The same edge, or else the nearest one along the loop that is
+        // still within the search distance of the vertex: a loop cut by
+        // the cover has edges shorter than a step's slide
+        const contactLoop& el = loops[r.edgeLoop];
+        const vec& x = loops[r.vertexLoop].vertices[r.vertex].x;
+        const int n = int(el.nEdges());
+        int nearest = n;
         for (auto it = range.first; it != range.second; ++it)
         {
             const int e = it->second->edge;
-            const bool next = (e + 1)%n == r.edge || (r.edge + 1)%n == e;
-            if (e == r.edge || (next && !old)) old = it->second;
+            const int apart = std::min((e - r.edge + n)%n, (r.edge - e + n)%n);
+            const bool near =
+                distanceToEdge(x, el, e) <= settings_.searchDistance;
+            if (apart < nearest && (apart == 0 || near))
+            {
+                nearest = apart;
+                old = it->second;
+            }
         }
 
         if (old)
@@ -232,29 +254,34 @@ void contactModel::carryHistory(const std::vector<contactRecord>& history, bool 
             r.state = touching || a.gap0 < 0 ? contactState::bonded : contactState::open;
             r.bondIntact = cemented && a.law->hasBondStrength();
         }
-        if (old && isClosed(old->state) && old->edge != r.edge)
-        {
-            // A closed contact that moved onto the next edge is measured
-            // against that edge's line from now on; near a corner that
-            // line can report a much deeper penetration than the step
-            // ended with. It is pushed out from where it was
-            const double limit = std::min(old->gap, 0.0) - settings_.overlapRelief;
-            a.relieved = a.gap0 < limit;
-            a.gap0 = std::max(a.gap0, limit);
-        }
-        else if (!old || !isClosed(old->state))
-        {
-            // A contact that overlaps without having been closed (the
-            // search missed it) is pushed out by at most overlapRelief per
-            // step: a penalty spring would resolve it in one step, and the
-            // momentum that gives would throw the bodies apart
-            a.relieved = a.gap0 < -settings_.overlapRelief;
-            a.gap0 = std::max(a.gap0, -settings_.overlapRelief);
-        }
+        hideOverlap(a, old);
         a.shearForce0 = isClosed(r.state) ? r.shearForce : 0;
         a.friction = r.state == contactState::sliding ? r.shearForce : 0;
         capStuckShearForce(a);
     }
+}
+
+
+void contactModel::hideOverlap(active& a, const contactRecord* old) const
+{
+    // The spring sees the measured gap plus the overlap hidden from it,
+    // which is never more than the overlap there is: it vanishes as the
+    // bodies move apart
+    const double measured = a.gap0;
+    double hidden = old ? std::min(old->hiddenOverlap, std::max(-measured, 0.0)) : 0.0;
+    // A closed contact starts where it ended: measured against another
+    // edge's line (near a corner) its gap can jump deeper, and a spring
+    // starting there would push the bodies apart with energy no load put
+    // in. An overlap the search found without the contact having been
+    // closed enters by at most overlapRelief: resolved at once, its
+    // momentum would throw the bodies apart
+    const double deepest = old && isClosed(old->state)
+        ? std::min(old->gap, 0.0) : -settings_.overlapRelief;
+    const double excess = deepest - (measured + hidden);
+    if (excess > 0) hidden += excess;
+    a.relieved = excess > settings_.touchTolerance;
+    a.gap0 = measured + hidden;
+    a.record.hiddenOverlap = hidden;
 }
 
 
@@ -367,12 +394,13 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
         }
         if
         (
-            isClosed(d.state) != isClosed(r.state)
+            settings_.holdChattering
+         && isClosed(r.state) && !isClosed(d.state)
          && a.changes >= maxChangesPerStep && !d.bondBroken
         )
         {
-            // A contact that keeps opening and closing within the step
-            // (near-zero normal force between two solves) keeps its state
+            // Held closed: held open, its vertex would pass into the other
+            // body unseen
             ++counts.held;
             d.state = r.state;
             d.frictionForce = a.friction;

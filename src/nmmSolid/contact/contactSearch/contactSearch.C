@@ -18,6 +18,11 @@ namespace
 using vec = Eigen::Vector2d;
 using vertexRef = std::pair<int, int>;          // (loop, vertex)
 
+//- A vertex inside a body may lie this fraction of the search distance
+//  deeper behind an edge's line than it is from the body's boundary:
+//  collinear pieces of a cut edge agree only up to rounding
+constexpr double depthTolerance = 1e-6;
+
 
 //- Outward normal of edge a->b: the material is on the left, so the right
 //  hand points out of it
@@ -267,12 +272,21 @@ class pairSearch
     //- Distance and side conditions every kept contact satisfies; a
     //  vertex behind the edge's line must also be inside the edge's body
     //  (past the end of an edge, or beside an acute corner, the line says
-    //  nothing)
+    //  nothing). When the boundary nearest to it is more than a corner
+    //  away from the edge, the vertex must also be no deeper behind the
+    //  edge's line than it is from that boundary: the line of an edge
+    //  beyond the corner the vertex sits at reports a depth the vertex is
+    //  not at. (Next to the edge's own corner the edge is the face the
+    //  vertex went through: the corner of a block on a base of the same
+    //  width is nearer to the block's side than to its bottom.)
     bool admissible(contactCandidate& c) const
     {
         const double dist = project(loops_, c);
         if (dist > d_ || c.gap < -d_) return false;
-        return c.gap >= 0 || inside(c);
+        if (c.gap >= 0) return true;
+        nearestFeature f;
+        return inside(c, f)
+            && (f.edgesAway < 2 || -c.gap <= f.distance + depthTolerance*d_);
     }
 
     //- The edge next to e across its start (side 0) or end (side 1),
@@ -295,8 +309,15 @@ class pairSearch
     //  edge, step to a neighbouring edge while that is closer. Nearest to
     //  an edge's inside, its gap decides; nearest to a vertex, the vertex
     //  is inside a convex corner behind both its edges' lines and inside a
-    //  reflex one behind either
-    bool inside(const contactCandidate& c) const
+    //  reflex one behind either. f: how far that feature is, and how
+    //  many edges along the loop from the candidate's
+    struct nearestFeature
+    {
+        double distance = 0;
+        int edgesAway = 0;
+    };
+
+    bool inside(const contactCandidate& c, nearestFeature& f) const
     {
         const contactLoop& el = loops_[c.edgeLoop];
         const vec& x = loops_[c.vertexLoop].vertices[c.vertex].x;
@@ -306,20 +327,23 @@ class pairSearch
         {
             const int side = here.t > 0.5;
             const int k = neighbour(el, e, side);
-            if (k < 0) return here.gap < 0;
+            if (k < 0) break;
             const projection there = projectOn(x, el, k);
             if (there.distance < here.distance)
             {
                 e = k;
                 here = there;
+                ++f.edgesAway;
                 continue;
             }
+            f.distance = here.distance;
             if (here.t > 0 && here.t < 1) return here.gap < 0;
             const int w = side ? edgeVertex(c.edgeLoop, e, 1) : e;
             return reflex(c.edgeLoop, w)
                 ? here.gap < 0 || there.gap < 0
                 : here.gap < 0 && there.gap < 0;
         }
+        f.distance = here.distance;
         return here.gap < 0;
     }
 

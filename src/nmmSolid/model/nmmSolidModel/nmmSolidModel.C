@@ -117,6 +117,7 @@ void nmmSolidModel::createContacts()
     s.touchTolerance = 1e-6*s.searchDistance;
     penetrationLimit_ = 0.4*s.searchDistance;
     s.overlapRelief = 0.1*penetrationLimit_;
+    s.holdChattering = !parts_.scheme.dynamic();
     contacts_ = std::make_unique<contactModel>
     (
         *parts_.cover, *parts_.elements, *parts_.geometry, *assembler_,

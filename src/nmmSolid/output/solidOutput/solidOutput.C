@@ -313,6 +313,9 @@ void writeContacts(hdf5File& out, const std::vector<contactRecord>& contacts)
     }
     out.write("contacts/ids", ids);
     out.write("contacts/values", values);
+    std::vector<double> hidden;
+    for (const auto& r : contacts) hidden.push_back(r.hiddenOverlap);
+    out.write("contacts/hiddenOverlap", hidden);
 }
 
 
@@ -329,6 +332,18 @@ std::vector<contactRecord> readContacts
     const auto values = in.read2D<double>("contacts/values", contactValueColumns);
     const std::size_t nLoops =
         model.contacts() ? model.contacts()->boundaries().loops().size() : 0;
+    // Absent from states written before it was kept: nothing hidden
+    std::vector<double> hidden(ids.rows, 0.0);
+    if (in.exists("contacts/hiddenOverlap"))
+    {
+        hidden = in.read<double>("contacts/hiddenOverlap");
+        if (hidden.size() != ids.rows)
+        {
+            throw fatalError(file.string() + ": contacts/hiddenOverlap has "
+                + std::to_string(hidden.size()) + " rows for "
+                + std::to_string(ids.rows) + " contacts");
+        }
+    }
     for (std::size_t i = 0; i < ids.rows; ++i)
     {
         contactRecord r;
@@ -352,6 +367,7 @@ std::vector<contactRecord> readContacts
         r.length = values(i, 5);
         r.point = {values(i, 6), values(i, 7)};
         r.normal = {values(i, 8), values(i, 9)};
+        r.hiddenOverlap = hidden[i];
         result.push_back(r);
     }
     return result;
