@@ -307,18 +307,67 @@ void contactModel::capStuckShearForce(active& a) const
 }
 
 
-contactModel::sparseMatrix contactModel::matrix(long nUnknowns) const
+contactModel::sparseMatrix contactModel::withPattern(const sparseMatrix& K)
 {
-    std::vector<Eigen::Triplet<double>> K;
+    std::vector<Eigen::Triplet<double>> zeros;
+    for (const active& a : active_)
+    {
+        addOuter(a.g, 0.0, zeros);
+        addOuter(a.h, 0.0, zeros);
+    }
+    sparseMatrix Z(K.rows(), K.cols());
+    Z.setFromTriplets(zeros.begin(), zeros.end());
+    sparseMatrix result = K + Z;
+    result.makeCompressed();
+
+    const auto slot = [&result](int i, int j)
+    {
+        const int* first = result.innerIndexPtr() + result.outerIndexPtr()[j];
+        const int* last = result.innerIndexPtr() + result.outerIndexPtr()[j + 1];
+        return int(std::lower_bound(first, last, i) - result.innerIndexPtr());
+    };
+    const auto slots = [&slot](const terms& t, std::vector<int>& out)
+    {
+        out.clear();
+        for (const auto& [i, ci] : t)
+        {
+            for (const auto& [j, cj] : t) out.push_back(slot(i, j));
+        }
+    };
+    const auto sameDofs = [](const terms& x, const terms& y)
+    {
+        return std::equal(x.begin(), x.end(), y.begin(), y.end(),
+            [](const auto& p, const auto& q) { return p.first == q.first; });
+    };
+    for (active& a : active_)
+    {
+        slots(a.g, a.gSlots);
+        // n.Delta and s.Delta of the same two points: the same unknowns
+        if (sameDofs(a.g, a.h)) a.hSlots = a.gSlots;
+        else slots(a.h, a.hSlots);
+    }
+    return result;
+}
+
+
+void contactModel::addSprings(sparseMatrix& K) const
+{
+    double* values = K.valuePtr();
+    const auto add = [values](const terms& t, const std::vector<int>& at, double k)
+    {
+        if (k == 0) return;
+        std::size_t n = 0;
+        for (const auto& [i, ci] : t)
+        {
+            for (const auto& [j, cj] : t) values[at[n++]] += k*ci*cj;
+        }
+    };
     for (const active& a : active_)
     {
         const contactState s = a.record.state;
-        addOuter(a.g, isClosed(s) ? a.kN : 0.0, K);
-        addOuter(a.h, s == contactState::bonded ? a.kS : 0.0, K);
+        add(a.g, a.gSlots, isClosed(s) ? a.kN : 0.0);
+        add(a.h, a.hSlots, s == contactState::bonded ? a.kS : 0.0);
     }
-    sparseMatrix M(nUnknowns, nUnknowns);
-    M.setFromTriplets(K.begin(), K.end());
-    return M;
 }
 
 

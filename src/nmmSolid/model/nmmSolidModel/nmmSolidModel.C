@@ -265,6 +265,9 @@ bool nmmSolidModel::solveWithContacts
         assembler_->patchDisplacements(state_.D), state_.contacts, state_.timeIndex == 0
     );
     timing_["contact detection"] += clock.elapsed();
+    clock = cpuTime();
+    const Eigen::SparseMatrix<double> pattern = contacts_->withPattern(sys.K);
+    timing_["contact assembly"] += clock.elapsed();
 
     const int maxIterations = parts_.controls
         ? parts_.controls->contact().maxOpenCloseIterations : contactSettings().maxOpenCloseIterations;
@@ -272,7 +275,8 @@ bool nmmSolidModel::solveWithContacts
     for (int it = 1; it <= maxIterations && !settled; ++it)
     {
         clock = cpuTime();
-        const Eigen::SparseMatrix<double> K = sys.K + contacts_->matrix(n);
+        Eigen::SparseMatrix<double> K = pattern;
+        contacts_->addSprings(K);
         const Eigen::VectorXd f = sys.f + contacts_->forces(n);
         timing_["contact assembly"] += clock.elapsed();
 
