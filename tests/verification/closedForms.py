@@ -282,6 +282,73 @@ class incline:
 
 
 # --------------------------------------------------------------------------
+# Sliding vs toppling: a rigid b x h block from rest on the incline of
+# incline (a = 30 degrees), dry friction phi. Static criteria: it slides
+# when tan a > tan phi, topples when tan a > b/h. Toppling without sliding,
+# it turns clockwise (downhill, x downslope) by theta about its downhill
+# bottom corner: I theta'' = M(theta), I = m (b^2 + h^2)/3,
+#   M = m g/2 [(h sin a - b cos a) cos theta + (h cos a + b sin a) sin theta];
+# linearised in theta, theta(t) = alpha0/k (cosh(sqrt(k) t) - 1).
+# --------------------------------------------------------------------------
+class topple:
+    a = 30.0            # degrees
+    g = 9.81
+    maxDisplacementRatio = 0.005
+    regimes = {"stable": (1.0, 1.0, 40.0), "sliding": (1.0, 1.0, 20.0),
+               "toppling": (0.25, 1.0, 40.0)}     # b, h, phi
+    x0 = 0.25           # the block's uphill bottom corner (x0, 0)
+    maxRotation = 1e-3  # [rad] of the stable and the sliding block
+    rotationTolerance = 0.03
+    slipRatio = 0.05    # pivot's x displacement / the top corner's
+
+    @classmethod
+    def slides(cls, regime):
+        b, h, phi = cls.regimes[regime]
+        return math.tan(math.radians(phi)) < math.tan(math.radians(cls.a))
+
+    @classmethod
+    def topples(cls, regime):
+        b, h, phi = cls.regimes[regime]
+        return b/h < math.tan(math.radians(cls.a))
+
+    @classmethod
+    def displacement(cls, regime, t):
+        """Slide d(t) along x (0 unless sliding without toppling)."""
+        if not cls.slides(regime) or cls.topples(regime):
+            return 0.0
+        return incline.displacement(cls.regimes[regime][2], t)
+
+    @classmethod
+    def alpha0(cls, regime):
+        """Angular acceleration from rest about the downhill corner."""
+        b, h, phi = cls.regimes[regime]
+        a = math.radians(cls.a)
+        return 3*cls.g*(h*math.sin(a) - b*math.cos(a))/(2*(b*b + h*h))
+
+    @classmethod
+    def k(cls, regime):
+        """d(moment)/d(theta)/I at theta = 0 [1/s^2]."""
+        b, h, phi = cls.regimes[regime]
+        a = math.radians(cls.a)
+        return 3*cls.g*(h*math.cos(a) + b*math.sin(a))/(2*(b*b + h*h))
+
+    @classmethod
+    def rotation(cls, regime, t):
+        """Clockwise rotation theta(t) (0 unless toppling without sliding)."""
+        if cls.slides(regime) or not cls.topples(regime):
+            return 0.0
+        return cls.alpha0(regime)/cls.k(regime)*(math.cosh(math.sqrt(cls.k(regime))*t) - 1)
+
+    @classmethod
+    def pivotFriction(cls, regime):
+        """Friction over normal force the pivot needs at the start."""
+        b, h, phi = cls.regimes[regime]
+        a = math.radians(cls.a)
+        al = cls.alpha0(regime)
+        return abs(al*h/2 - cls.g*math.sin(a))/(al*b/2 + cls.g*math.cos(a))
+
+
+# --------------------------------------------------------------------------
 # Bouncing block: a rigid 1 x 1 block dropped from h0 onto a fixed base
 # through frictionless penalty springs (kN per closed contact point, all in
 # parallel for a vertical impact): omega = sqrt(n kN/m). Elastic contact

@@ -154,9 +154,42 @@ def closedForms():
            and i.slides(29), "incline: g sin(a)/2 at phi = 0, static at 31, slides at 29")
     expect(abs(cf.allowedPenetration(2.0) - 0.01) < 1e-15,
            "incline: allowed penetration 0.01 m (half size 2)")
+    tp = cf.topple
+    expect([(not tp.slides(r), not tp.topples(r)) for r in ("stable", "sliding", "toppling")]
+           == [(True, True), (False, True), (True, False)],
+           "topple: stable, sliding, toppling by the static criteria")
+    expect(abs(tp.alpha0("toppling") - 3.9262) < 5e-5 and tp.pivotFriction("toppling")
+           < math.tan(math.radians(tp.regimes["toppling"][2])),
+           "topple: alpha0 = 3.9262 rad/s^2 (%.6g), the pivot holds (friction %.3g)"
+           % (tp.alpha0("toppling"), tp.pivotFriction("toppling")))
+    err = abs(toppleRK4(0.15)/tp.rotation("toppling", 0.15) - 1)
+    expect(err < 2e-4, "topple: theta(0.15) linearised = full equation (%.1e)" % err)
     pb = cf.pushedBlock
     expect(abs(pb.onsetForce() - 0.67735) < 1e-5,
            "pushedBlock: onset at c L + W tan phi = 0.6774 (%.6g)" % pb.onsetForce())
+
+
+def toppleRK4(tEnd, n=3000):
+    """theta(tEnd) of the toppling block from the full equation
+    I theta'' = M(theta) (closedForms.topple), RK4 from rest."""
+    tp = cf.topple
+    b, h, _ = tp.regimes["toppling"]
+    a = math.radians(tp.a)
+    c = 3*tp.g/(2*(b*b + h*h))
+
+    def f(y):
+        th = y[0]
+        return np.array([y[1], c*((h*math.sin(a) - b*math.cos(a))*math.cos(th)
+                                  + (h*math.cos(a) + b*math.sin(a))*math.sin(th))])
+    y = np.zeros(2)
+    dt = tEnd/n
+    for _ in range(n):
+        k1 = f(y)
+        k2 = f(y + dt/2*k1)
+        k3 = f(y + dt/2*k2)
+        k4 = f(y + dt*k3)
+        y = y + dt/6*(k1 + 2*k2 + 2*k3 + k4)
+    return float(y[0])
 
 
 # --------------------------------------------------------------------------
@@ -235,6 +268,10 @@ CHECKERS = {"cantilever": ("checkCantilever.py", []),
             "waveBar": ("checkWaveBar.py", []),
             "incline": ("checkIncline.py", ["20"]),
             "inclineStatic": ("checkIncline.py", ["31"]),
+            "toppleStable": ("checkTopple.py", ["stable"]),
+            "toppleSliding": ("checkTopple.py", ["sliding"]),
+            "toppleToppling": ("checkTopple.py", ["toppling"]),
+            "toppleSlip": ("checkTopple.py", ["toppling"]),
             "bouncingBlock": ("checkBouncingBlock.py", ["trapezoidal"]),
             "bouncingBlockDDA": ("checkBouncingBlock.py", ["DDA"]),
             "pushedBlock": ("checkPushedBlock.py", [])}

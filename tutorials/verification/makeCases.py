@@ -7,8 +7,9 @@ Usage (from anywhere; plain python3, standard library only):
 Writes system/, constant/ and 0/ of cantilever, plateHole, plateHoleFoam,
 lame, freeFall, waveBar and sneddon/angle{0,30,45}; and the whole of the
 contact cases (docs/verification.md, Contact) under contact/:
-incline/phi{0,10,20,29,31}, pushedBlock, bouncingBlock/{trapezoidal,DDA}
-(their Allrun, Allclean and README.md too). The files it writes
+incline/phi{0,10,20,29,31}, topple/{stable,sliding,toppling},
+pushedBlock, bouncingBlock/{trapezoidal,DDA} (their Allrun, Allclean and
+README.md too). The files it writes
 are committed, so running it is only needed after changing a parameter
 here; the README of each case explains the choices. The polygons of the
 curved boundaries are written out in full (64 chords per quarter circle,
@@ -602,6 +603,132 @@ the model's bounding box: 0.01 m here).
 """ % (phiDeg, phiDeg, phiDeg))
 
 
+# Sliding vs toppling: block b x h on the incline of incline() (a = 30
+# degrees, gravity tilted), dry friction phi; regime -> (b, h, phi).
+TOPPLE = {"stable": (1.0, 1.0, 40), "sliding": (1.0, 1.0, 20),
+          "toppling": (0.25, 1.0, 40)}
+
+
+def topple(regime):
+    """A b x h block from rest on a 4 x 0.5 base fixed at its bottom, the
+    slope made by tilting gravity by a = 30 degrees (as incline()): stable,
+    sliding without toppling, or toppling about its downhill bottom
+    corner without sliding."""
+    c = "contact/topple/%s" % regime
+    b, h, phiDeg = TOPPLE[regime]
+    a = math.radians(30.0)
+    tanA, tanPhi = math.tan(a), math.tan(math.radians(phiDeg))
+    x0 = 0.25
+    if regime == "toppling":
+        # theta(t) = (alpha0/k)(cosh(sqrt(k) t) - 1) reaches 0.0453 rad at
+        # 0.15 s: the early motion, small rotation
+        endTime, deltaT, writeInterval, cell = 0.15, 0.005, 0.01, 0.125
+        comment = "30 steps of 0.005 s, written every 0.01 s"
+    else:
+        endTime, deltaT, writeInterval, cell = 1, 0.01, 0.1, 0.25
+        comment = "100 steps of 0.01 s, written every 0.1 s"
+    dynamicControlDict(c, endTime, deltaT, writeInterval, comment)
+    contactSolution(c, DDA, stepControl="    maxDisplacementRatio    0.005;\n",
+                    comment="// DDA (Newmark beta = 1/2, gamma = 1): exact for constant\n"
+                    "// accelerations; automatic penalties (50 E normal)\n")
+    mechanicalProperties(c, False, "rock", "1e9", "0.25", "2000")
+    gravity(c, 9.81*math.sin(a), -9.81*math.cos(a),
+            "// |g| = 9.81 at a = 30 degrees to -y: the base is the incline\n")
+    contactLaw(c, phiDeg, comment="// Dry friction only: phi = %d degrees (tan a = %.4f, "
+               "tan phi = %.4f, b/h = %s)\n" % (phiDeg, tanA, tanPhi, fmt(b/h)))
+    meshDict(c, """\
+    base   { material rock; polygon ((0 -0.5) (4 -0.5) (4 0) (0 0)); }
+    block  { material rock; polygon (%s %s %s %s); }
+""" % (pt((x0, 0)), pt((x0 + b, 0)), pt((x0 + b, h)), pt((x0, h))), """\
+    fixed       { type box; min (-1 -0.500001); max (5 -0.499999); }
+""", """\
+    type        structured;
+    cellSize    %s;
+""" % fmt(cell))
+    D(c, """\
+    fixed       { type fixedValue; value uniform (0 0 0); }
+""")
+    scripts(c, "checkTopple.py")
+    if regime == "stable":
+        closed = """\
+tan a = 0.577 < tan phi = %.3f and tan a < b/h = 1: the block neither
+slides nor rotates.""" % tanPhi
+        check = """\
+Check (`tests/verification/checkTopple.py <case> stable`): in the last
+frame (t about 1 s) the block's mean |D| and the largest |D| of its points
+below the allowed penetration, 0.4 times the search distance (2.5
+maxDisplacementRatio half the larger side of the model's bounding box:
+0.01 m here), and its rotation (least squares rigid fit of its points)
+below 1e-3 rad."""
+    elif regime == "sliding":
+        closed = """\
+tan phi = %.3f < tan a = 0.577 < b/h = 1: the block slides without
+toppling (the friction's moment keeps the normal force's resultant within
+the base while tan phi < b/h),
+
+    d(t) = g (sin a - cos a tan phi) t^2/2,   no rotation.""" % tanPhi
+        check = """\
+Check (`tests/verification/checkTopple.py <case> sliding`): the mean x
+displacement of the block's elements in the last frame (t about 1 s,
+compared at the frame's own time) within 1% of d(t), and its rotation
+(least squares rigid fit of its points) below 1e-3 rad."""
+    else:
+        closed = """\
+b/h = 0.25 < tan a = 0.577 < tan phi = %.3f: the block topples about its
+downhill bottom corner P without sliding. Gravity's clockwise moment
+about P, with the block turned clockwise by theta,
+
+    M(theta) = m g/2 [(h sin a - b cos a) cos theta
+                      + (h cos a + b sin a) sin theta],
+
+and the moment of inertia about P, I = m (b^2 + h^2)/3, give
+I theta'' = M(theta). From rest the angular acceleration is
+
+    alpha0 = 3 g (h sin a - b cos a)/(2 (b^2 + h^2)) = 3.926 rad/s^2,
+
+and, linearised in theta (k = 3 g (h cos a + b sin a)/(2 (b^2 + h^2))
+= 13.72 s^-2),
+
+    theta(t) = alpha0/k (cosh(sqrt(k) t) - 1) = alpha0 t^2/2 + O(t^4),
+
+0.0453 rad at t = 0.15 s (the full equation gives 7e-5 of theta less;
+alpha0 t^2/2 alone is 2.5%% low). The pivot holds: from rest the
+friction it needs is |alpha0 h/2 - g sin a|/(alpha0 b/2 + g cos a) = 0.33
+of the normal force, below tan phi.""" % tanPhi
+        check = """\
+Check (`tests/verification/checkTopple.py <case> toppling`): in the last
+frame (t about 0.15 s, compared at the frame's own time) the block's
+clockwise rotation (least squares rigid fit of its points) within 3% of
+theta(t), and the x displacement of the pivot corner below 5% of that of
+the downhill top corner (no slip). The other frames are reported, with
+alpha0 t^2/2."""
+    readme(c, """\
+# topple/%s: sliding vs toppling on an incline
+
+A b x h = %s x %s block, from rest, on a slope of a = 30 degrees, dry
+(Mohr-Coulomb, no cohesion) friction at phi = %d degrees. The slope is made
+by tilting gravity: g = 9.81 (sin a, -cos a), so that the base's top face
+is the incline and x points downslope. For a rigid block, the static
+criteria are
+
+- stable: tan a < tan phi and tan a < b/h;
+- sliding without toppling: tan a > tan phi and tan a < b/h;
+- toppling without sliding: tan a < tan phi and tan a > b/h.
+
+%s
+
+Base 4 x 0.5 (bottom edge fixed), block at x = %s..%s; E = 1e9,
+nu = 0.25, rho = 2000, plane strain; automatic penalties (normal 50 E);
+structured cover, cellSize %s.
+DDA (`velocityRatio 1`), %s.
+
+%s
+""" % (regime, fmt(b), fmt(h), phiDeg, closed, fmt(x0), fmt(x0 + b), fmt(cell),
+       "deltaT %s s, %d steps, frames every %s s" % (fmt(deltaT), round(endTime/deltaT),
+                                                   fmt(writeInterval)),
+       check))
+
+
 def bouncingBlock(scheme):
     """A 1 x 1 block dropped from h0 = 1 onto a base fixed at its bottom.
     The contact spring is much softer than the blocks (normalPenalty 5e6
@@ -1114,6 +1241,8 @@ if __name__ == "__main__":
         sneddon(angle)
     for phi in (0, 10, 20, 29, 31):
         incline(phi)
+    for regime in ("stable", "sliding", "toppling"):
+        topple(regime)
     for scheme in ("trapezoidal", "DDA"):
         bouncingBlock(scheme)
     pushedBlock()

@@ -8,7 +8,8 @@ Usage:
     makeSynthetic.py <case> <outDir> [--tamper] [--level k]
 
 case: cantilever | plateHole | lame | sneddon | freeFall | waveBar |
-      incline (phi 20) | inclineStatic (phi 31) | bouncingBlock |
+      incline (phi 20) | inclineStatic (phi 31) | toppleStable |
+      toppleSliding | toppleToppling | toppleSlip | bouncingBlock |
       bouncingBlockDDA | pushedBlock
 Writes <outDir>/VTK/<name>_<index>.vtu and <outDir>/VTK/<name>.vtu.series
 (name = the folder name of outDir) in the solver's layout: polygons in the
@@ -24,6 +25,12 @@ closedForms.py at the points (point data) and at the element centroids
     waveBar     c x 0.95
     incline     slider displacement x 1.02
     inclineStatic  slider creeping 0.02 m in 1 s
+    toppleStable   the block turning by 0.005 rad (within the allowed
+                   penetration)
+    toppleSliding  the sliding block turning by 0.005 rad
+    toppleToppling rotation x 1.05
+    toppleSlip     the pivot slipping by a tenth of the top corner's
+                   displacement
     bouncingBlock  restitution 0.97 instead of 1
     bouncingBlockDDA  restitution 1.02 (an energy gain) instead of 0.8
     pushedBlock    the bond breaks at F = 0.60 instead of 0.6774
@@ -324,6 +331,67 @@ def inclineStatic(out, tamper):
                 lambda t: ((0.02*t if tamper else 1e-4*t), -1e-6))
 
 
+def toppleFrames(out, regime, theta, shift):
+    """The topple tutorial's blocks (base 4 x 0.5, block b x h at x0);
+    the block turns clockwise by theta(t) about its downhill bottom corner
+    and moves by shift(t) (2-vectors), the base stays put."""
+    c = cf.topple
+    b, h, _ = c.regimes[regime]
+    X, cells, ids = twoBlocks(((0, -0.5), (4, 0)), ((c.x0, 0), (c.x0 + b, h)))
+    C = centroids(X, cells)
+    pointBlock = np.zeros(len(X), dtype=int)
+    for cell, k in zip(cells, ids):
+        pointBlock[cell] = k
+    pivot = np.array([c.x0 + b, 0.0])
+
+    def motion(P, t):
+        q = -theta(t)
+        R = np.array([[math.cos(q), -math.sin(q)], [math.sin(q), math.cos(q)]])
+        return (P - pivot) @ R.T + pivot - P + np.asarray(shift(t), dtype=float)
+    times = ([0.01*i for i in range(16)] if regime == "toppling"
+             else [0.1*i for i in range(11)])
+    w = writer(out)
+    for i, t in enumerate(times):
+        D = np.where(pointBlock[:, None] == 1, motion(X, t), 0.0)
+        Dc = np.where(ids[:, None] == 1, motion(C, t), 0.0)
+        w.frame(i, t, X, cells, D, 0*D, np.zeros((len(X), 6)), Dc, 0*Dc,
+                np.zeros((len(cells), 6)), blockId=ids)
+    w.close()
+
+
+def toppleStable(out, tamper):
+    """Stable: a creep of 1e-4 m in 1 s; tampered, the block also turns by
+    0.005 rad about its downhill corner (its points stay within the
+    allowed penetration: only the rotation check can see it)."""
+    toppleFrames(out, "stable", lambda t: 0.005*t if tamper else 0.0,
+                 lambda t: (1e-4*t, -1e-6))
+
+
+def toppleSliding(out, tamper):
+    """Sliding: d(t) exactly; tampered, it also turns by 0.005 rad."""
+    c = cf.topple
+    toppleFrames(out, "sliding", lambda t: 0.005*t if tamper else 0.0,
+                 lambda t: (c.displacement("sliding", t), 0.0))
+
+
+def toppleToppling(out, tamper):
+    """Toppling: theta(t) about the pivot (x 1.05 when tampered)."""
+    c = cf.topple
+    s = 1.05 if tamper else 1.0
+    toppleFrames(out, "toppling", lambda t: s*c.rotation("toppling", t),
+                 lambda t: (0.0, 0.0))
+
+
+def toppleSlip(out, tamper):
+    """Toppling: theta(t) about the pivot; tampered, the pivot also slips
+    downhill by a tenth of the top corner's x displacement."""
+    c = cf.topple
+    h = c.regimes["toppling"][1]
+    toppleFrames(out, "toppling", lambda t: c.rotation("toppling", t),
+                 lambda t: ((0.1*h*math.sin(c.rotation("toppling", t)) if tamper else 0.0),
+                            0.0))
+
+
 def bouncingBlockDY(t, e, omega=150.0):
     """Height change of a block dropped from h0 that hits a linear spring
     (omega) and leaves it with e times its impact speed: free flight, then
@@ -404,6 +472,8 @@ def pushedBlock(out, tamper):
 CASES = {"cantilever": cantilever, "plateHole": plateHole, "lame": lame,
          "sneddon": sneddon, "freeFall": freeFall, "waveBar": waveBar,
          "incline": incline, "inclineStatic": inclineStatic,
+         "toppleStable": toppleStable, "toppleSliding": toppleSliding,
+         "toppleToppling": toppleToppling, "toppleSlip": toppleSlip,
          "bouncingBlock": bouncingBlock, "bouncingBlockDDA": bouncingBlockDDA,
          "pushedBlock": pushedBlock}
 
