@@ -32,19 +32,32 @@ TOL = 0.01
 SLIDER = 1
 
 
-def blockDisplacement(f, block):
-    """Area-weighted mean cell D of a block, and its points' largest |D|."""
+def blockCells(f, block):
+    """Mask of the cells of a block."""
     if "blockId" not in f.cellData or "D" not in f.cellData:
         raise SystemExit("%s: no cell data blockId and D" % f.path)
-    ids = f.cellData["blockId"].astype(int)
-    sel = ids == block
+    sel = f.cellData["blockId"].astype(int) == block
     if not sel.any():
         raise SystemExit("%s: no cells of block %d" % (f.path, block))
-    Dc = f.cellData["D"][:, :2]
+    return sel
+
+
+def meanDisplacement(f, sel):
+    """Area-weighted mean cell D of the selected cells."""
     w = f.cellArea[sel]
-    mean = (Dc[sel]*w[:, None]).sum(axis=0)/w.sum()
-    pts = np.unique(np.concatenate([f.cells[k] for k in np.flatnonzero(sel)]))
-    return mean, float(np.linalg.norm(f.D[pts], axis=1).max())
+    return (f.cellData["D"][sel, :2]*w[:, None]).sum(axis=0)/w.sum()
+
+
+def blockPoints(f, sel):
+    """The points of the selected cells."""
+    return np.unique(np.concatenate([f.cells[k] for k in np.flatnonzero(sel)]))
+
+
+def blockDisplacement(f, block):
+    """Area-weighted mean cell D of a block, and its points' largest |D|."""
+    sel = blockCells(f, block)
+    pts = blockPoints(f, sel)
+    return meanDisplacement(f, sel), float(np.linalg.norm(f.D[pts], axis=1).max())
 
 
 def halfSize(f):

@@ -35,28 +35,10 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import closedForms as cf  # noqa: E402
 import nmmFrames as nf  # noqa: E402
+from checkIncline import blockCells, blockPoints, halfSize, meanDisplacement  # noqa: E402
 
 BLOCK = 1
 SLIDE_TOL = 0.01
-
-
-def blockCells(f, block):
-    if "blockId" not in f.cellData or "D" not in f.cellData:
-        raise SystemExit("%s: no cell data blockId and D" % f.path)
-    sel = f.cellData["blockId"].astype(int) == block
-    if not sel.any():
-        raise SystemExit("%s: no cells of block %d" % (f.path, block))
-    return sel
-
-
-def meanDisplacement(f, sel):
-    """Area-weighted mean cell D of the selected cells."""
-    w = f.cellArea[sel]
-    return (f.cellData["D"][sel, :2]*w[:, None]).sum(axis=0)/w.sum()
-
-
-def blockPoints(f, sel):
-    return np.unique(np.concatenate([f.cells[k] for k in np.flatnonzero(sel)]))
 
 
 def clockwiseRotation(f, pts):
@@ -73,11 +55,6 @@ def corner(f, pts, target):
     """The point of pts whose undeformed position is nearest target."""
     d = np.linalg.norm(f.X[pts] - np.asarray(target), axis=1)
     return pts[int(np.argmin(d))]
-
-
-def halfSize(f):
-    """Half the larger side of the bounding box of the undeformed model."""
-    return 0.5*float((f.X.max(axis=0) - f.X.min(axis=0)).max())
 
 
 def main(argv):

@@ -551,18 +551,23 @@ DDA = "{ type DDA; velocityRatio 1; }"
 TRAPEZOIDAL = "{ type Newmark; beta 0.25; gamma 0.5; }"
 
 
-def incline(phiDeg):
-    """A 1 x 1 block on a 4 x 0.5 base fixed at its bottom; the slope is
-    made by tilting gravity by a = 30 degrees, not the geometry."""
-    c = "contact/incline/phi%d" % phiDeg
-    a = math.radians(30.0)
-    dynamicControlDict(c, 1, 0.01, 0.1, "100 steps of 0.01 s, written every 0.1 s")
+def inclineSetup(c, a):
+    """DDA, rock and gravity tilted by a: the base's top face is the incline."""
     contactSolution(c, DDA, stepControl="    maxDisplacementRatio    0.005;\n",
                     comment="// DDA (Newmark beta = 1/2, gamma = 1): exact for constant\n"
                     "// accelerations; automatic penalties (50 E normal)\n")
     mechanicalProperties(c, False, "rock", "1e9", "0.25", "2000")
     gravity(c, 9.81*math.sin(a), -9.81*math.cos(a),
             "// |g| = 9.81 at a = 30 degrees to -y: the base is the incline\n")
+
+
+def incline(phiDeg):
+    """A 1 x 1 block on a 4 x 0.5 base fixed at its bottom; the slope is
+    made by tilting gravity by a = 30 degrees, not the geometry."""
+    c = "contact/incline/phi%d" % phiDeg
+    a = math.radians(30.0)
+    dynamicControlDict(c, 1, 0.01, 0.1, "100 steps of 0.01 s, written every 0.1 s")
+    inclineSetup(c, a)
     contactLaw(c, phiDeg, comment="// Dry friction only: phi = %d degrees (tan a = %.4f, tan phi = %.4f)\n"
                % (phiDeg, math.tan(a), math.tan(math.radians(phiDeg))))
     meshDict(c, """\
@@ -628,12 +633,7 @@ def topple(regime):
         endTime, deltaT, writeInterval, cell = 1, 0.01, 0.1, 0.25
         comment = "100 steps of 0.01 s, written every 0.1 s"
     dynamicControlDict(c, endTime, deltaT, writeInterval, comment)
-    contactSolution(c, DDA, stepControl="    maxDisplacementRatio    0.005;\n",
-                    comment="// DDA (Newmark beta = 1/2, gamma = 1): exact for constant\n"
-                    "// accelerations; automatic penalties (50 E normal)\n")
-    mechanicalProperties(c, False, "rock", "1e9", "0.25", "2000")
-    gravity(c, 9.81*math.sin(a), -9.81*math.cos(a),
-            "// |g| = 9.81 at a = 30 degrees to -y: the base is the incline\n")
+    inclineSetup(c, a)
     contactLaw(c, phiDeg, comment="// Dry friction only: phi = %d degrees (tan a = %.4f, "
                "tan phi = %.4f, b/h = %s)\n" % (phiDeg, tanA, tanPhi, fmt(b/h)))
     meshDict(c, """\
