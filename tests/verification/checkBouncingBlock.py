@@ -93,6 +93,21 @@ def bounces(t, dy, h0):
     return heights, deepest
 
 
+def errors(caseDir):
+    """Error measures of the rebounds, as numbers (no pass/fail): the
+    largest relative error of a rebound height against h0 (reboundError)
+    and the largest energy loss of a bounce, |1 - h/h_prev| (energyLoss);
+    nan when the block does not rebound within the run."""
+    c = cf.bouncingBlock
+    t, dy, _ = history(caseDir)
+    heights, _ = bounces(t, dy, c.h0)
+    if not heights:
+        return {"reboundError": float("nan"), "energyLoss": float("nan")}
+    previous = [c.h0] + heights[:-1]
+    return {"reboundError": max(abs(h - c.h0)/c.h0 for h in heights),
+            "energyLoss": max(abs(1 - h/p) for h, p in zip(heights, previous))}
+
+
 def main(argv):
     if len(argv) != 2 or argv[1] not in ("trapezoidal", "DDA"):
         print(__doc__)

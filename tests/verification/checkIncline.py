@@ -65,6 +65,33 @@ def halfSize(f):
     return 0.5*float((f.X.max(axis=0) - f.X.min(axis=0)).max())
 
 
+def errors(caseDir, phi):
+    """Error measures of the slide, as numbers (no pass/fail), each frame
+    compared at its own time. Sliding: the largest relative error of d
+    over the frames with t > 0 (dError) and that of the last frame
+    (dEndError). Sticking: the largest |mean D| of the slider over the
+    allowed penetration (stickRatio)."""
+    c = cf.incline
+    phi = float(phi)
+    series = nf.readSeries(caseDir)
+    worst = last = 0.0
+    for t, path in series:
+        if t <= 0:
+            continue
+        mean, _ = blockDisplacement(nf.readFrame(path), SLIDER)
+        if c.slides(phi):
+            d = c.displacement(phi, t)
+            last = abs(float(mean[0]) - d)/d
+        else:
+            last = float(np.linalg.norm(mean))
+        worst = max(worst, last)
+    if c.slides(phi):
+        return {"dError": worst, "dEndError": last}
+    limit = cf.allowedPenetration(halfSize(nf.readFrame(series[0][1])),
+                                  c.maxDisplacementRatio)
+    return {"stickRatio": worst/limit}
+
+
 def main(argv):
     if len(argv) != 2 or argv[0] in ("-h", "-help", "--help"):
         print(__doc__)

@@ -57,6 +57,51 @@ def corner(f, pts, target):
     return pts[int(np.argmin(d))]
 
 
+def errors(caseDir, regime):
+    """Error measures of the block's motion, as numbers (no pass/fail),
+    each frame compared at its own time. Toppling: the relative error of
+    the rotation in the last frame (thetaError), the largest over the
+    frames with t >= 0.05 s (thetaMaxError; earlier the rotation is still
+    of the order of the contact springs' settling) and |pivot D_x| over
+    |top corner D_x| in the last frame (slipRatio). Sliding: the relative
+    error of the slide in the last frame (dError) and |rotation| (rad).
+    Stable: |mean D| over the allowed penetration (stickRatio) and
+    |rotation|."""
+    c = cf.topple
+    b, h, phi = c.regimes[regime]
+    series = nf.readSeries(caseDir)
+    if regime == "toppling":
+        worst = 0.0
+        for t, path in series:
+            if t < 0.05 - 1e-9:
+                continue
+            f = nf.readFrame(path)
+            pts = blockPoints(f, blockCells(f, BLOCK))
+            theta = c.rotation(regime, t)
+            worst = max(worst, abs(clockwiseRotation(f, pts) - theta)/theta)
+        t, path = series[-1]
+        f = nf.readFrame(path)
+        pts = blockPoints(f, blockCells(f, BLOCK))
+        theta = c.rotation(regime, t)
+        pivot = corner(f, pts, (c.x0 + b, 0.0))
+        top = corner(f, pts, (c.x0 + b, h))
+        dTop = abs(float(f.D[top, 0]))
+        return {"thetaError": abs(clockwiseRotation(f, pts) - theta)/theta,
+                "thetaMaxError": worst,
+                "slipRatio": abs(float(f.D[pivot, 0]))/dTop if dTop > 0 else float("inf")}
+    t, path = series[-1]
+    f = nf.readFrame(path)
+    sel = blockCells(f, BLOCK)
+    rotation = abs(clockwiseRotation(f, blockPoints(f, sel)))
+    mean = meanDisplacement(f, sel)
+    if regime == "sliding":
+        d = c.displacement(regime, t)
+        return {"dError": abs(float(mean[0]) - d)/d, "rotation": rotation}
+    limit = cf.allowedPenetration(halfSize(nf.readFrame(series[0][1])),
+                                  c.maxDisplacementRatio)
+    return {"stickRatio": float(np.linalg.norm(mean))/limit, "rotation": rotation}
+
+
 def main(argv):
     c = cf.topple
     if len(argv) != 2 or argv[1] not in c.regimes:

@@ -21,7 +21,8 @@ import subprocess
 import sys
 from pathlib import Path
 
-CASES = ["cantilever", "plateHole", "lame", "sneddon", "freeFall", "waveBar"]
+CASES = ["cantilever", "plateHole", "lame", "sneddon", "freeFall", "waveBar",
+         "incline", "toppling", "bouncingBlock"]
 
 
 def main(argv):
