@@ -24,7 +24,6 @@ Exit 1 when any check fails.
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 
-import json
 import sys
 from pathlib import Path
 
