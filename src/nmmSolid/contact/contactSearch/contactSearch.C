@@ -269,6 +269,14 @@ class pairSearch
         return c;
     }
 
+    //- The boundary feature nearest to a vertex: how far it is, and how
+    //  many edges along the loop from a candidate's edge
+    struct nearestFeature
+    {
+        double distance = 0;
+        int edgesAway = 0;
+    };
+
     //- Distance and side conditions every kept contact satisfies; a
     //  vertex behind the edge's line must also be inside the edge's body
     //  (past the end of an edge, or beside an acute corner, the line says
@@ -309,14 +317,7 @@ class pairSearch
     //  edge, step to a neighbouring edge while that is closer. Nearest to
     //  an edge's inside, its gap decides; nearest to a vertex, the vertex
     //  is inside a convex corner behind both its edges' lines and inside a
-    //  reflex one behind either. f: how far that feature is, and how
-    //  many edges along the loop from the candidate's
-    struct nearestFeature
-    {
-        double distance = 0;
-        int edgesAway = 0;
-    };
-
+    //  reflex one behind either. f: that feature
     bool inside(const contactCandidate& c, nearestFeature& f) const
     {
         const contactLoop& el = loops_[c.edgeLoop];
