@@ -155,7 +155,7 @@ TEST(solutionControlsErrors, dynamicNeedsTimeScheme)
     EXPECT_EQ(type.where().line, 2);
     EXPECT_EQ(type.keyword(), "type");
     const IOerror beta = errorReading(
-        "analysis dynamic;\ntimeScheme { type Newmark; beta 0.7; }");
+        "analysis dynamic;\ntimeScheme { type Newmark; beta 1.2; }");
     EXPECT_EQ(beta.keyword(), "beta");
     const IOerror ddaBeta = errorReading(
         "analysis dynamic;\ntimeScheme { type DDA; velocityRatio 1; beta 0.25; }");

@@ -69,9 +69,11 @@ const keywordTable& solutionControls::NewmarkKeywords()
     {
         keywordTable t("Newmark", "Newmark-beta time integration");
         t.word("type", "time scheme").required().choices({"DDA", "Newmark"});
-        t.scalar("beta", "Newmark beta", "").defaultValue(0.25).range(0, 0.5)
-            .notes("1/4 with gamma 1/2 is the trapezoidal rule");
-        t.scalar("gamma", "Newmark gamma", "").defaultValue(0.5).range(0.5, 1);
+        t.scalar("beta", "Newmark beta", "").defaultValue(0.25).range(0, 1)
+            .notes("1/4 with gamma 1/2 is the trapezoidal rule; 1 with "
+                   "gamma 3/2 damps the velocity of stiff (contact) modes "
+                   "within a few steps");
+        t.scalar("gamma", "Newmark gamma", "").defaultValue(0.5).range(0.5, 1.5);
         return t;
     }();
     return table;
