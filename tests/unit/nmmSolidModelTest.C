@@ -1,7 +1,8 @@
 // Unit tests of nmmSolidModel against closed forms: patch tests (uncut,
 // cut, with slivers down to area ratio 1e-10), free fall under both time
 // schemes, a spinning free block that must keep its area, a restart that
-// reproduces an uninterrupted run, and a floating block that is named.
+// reproduces an uninterrupted run (and keeps the contact history), and a
+// floating block that is named.
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/case/caseFolder/caseFolder.H"
 #include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
@@ -363,4 +364,57 @@ TEST(nmmSolidModel, sliverExtensionBoundsTheConditionNumber)
         staticLinear, linearFieldText
     );
     EXPECT_LT(condTreated, 10*scaledConditionNumber(*uncut.model()));
+}
+
+
+// The contact history is part of the restart state: every field of every
+// record, the overlap hidden from the springs included, reads back as
+// written
+TEST(nmmSolidModel, contactHistorySurvivesARestart)
+{
+    const testCase c
+    (
+        "base { material rock; polygon ((0 -1) (4 -1) (4 0) (0 0)); }"
+        "block { material rock; polygon ((1 0) (2 0) (2 1) (1 1)); }",
+        "fixed { type box; min (-1 -1.001); max (5 -0.999); }"
+        "rest { type box; min (-1 -0.99); max (5 2); }",
+        "type structured; cellSize 0.25;",
+        "analysis dynamic; timeScheme { type DDA; velocityRatio 1; }\n",
+        "fixed { type fixedValue; value uniform (0 0 0); }"
+        "rest { type tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }",
+        "(0 -9.81 0)"
+    );
+    auto m = c.model();
+    m->solveStep(1e-3);
+    m->acceptStep();
+    nm::solidState s = m->saveState();
+    ASSERT_FALSE(s.contacts.empty());
+    for (std::size_t i = 0; i < s.contacts.size(); ++i)
+    {
+        // Distinct values in every field, so that a swapped column shows
+        s.contacts[i].hiddenOverlap = 1e-6*(i + 1);
+        s.contacts[i].slip = 2e-6*(i + 1);
+        s.contacts[i].shearForce = 3.0*(i + 1);
+    }
+    m->restoreState(s);
+    nm::solidOutput::writeState(c.dir.path, *m);
+    const nm::solidState r = nm::solidOutput::readState(c.dir.path, *m);
+    ASSERT_EQ(r.contacts.size(), s.contacts.size());
+    for (std::size_t i = 0; i < s.contacts.size(); ++i)
+    {
+        const auto& a = s.contacts[i];
+        const auto& b = r.contacts[i];
+        EXPECT_EQ(a.key(), b.key());
+        EXPECT_EQ(a.state, b.state);
+        EXPECT_EQ(a.bondIntact, b.bondIntact);
+        EXPECT_EQ(a.hiddenOverlap, b.hiddenOverlap);
+        EXPECT_EQ(a.slip, b.slip);
+        EXPECT_EQ(a.shearForce, b.shearForce);
+        EXPECT_EQ(a.normalForce, b.normalForce);
+        EXPECT_EQ(a.gap, b.gap);
+        EXPECT_EQ(a.t, b.t);
+        EXPECT_EQ(a.length, b.length);
+        EXPECT_EQ(a.point, b.point);
+        EXPECT_EQ(a.normal, b.normal);
+    }
 }
