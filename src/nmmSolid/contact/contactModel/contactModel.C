@@ -20,7 +20,7 @@ using vec = Eigen::Vector2d;
 //  by one solve)
 constexpr double frictionTolerance = 1e-2;
 
-//- State changes of one contact within a step before it is held
+//- State changes of one contact within a step that make it chatter
 constexpr int maxChangesPerStep = 3;
 
 //- Smallest spring weight: a contact at a sliver's vertex (a tiny
@@ -388,6 +388,74 @@ Eigen::VectorXd contactModel::forces(long nUnknowns) const
 }
 
 
+double contactModel::stepLength
+(
+    const Eigen::VectorXd& dd,
+    const Eigen::VectorXd& delta,
+    double curvature,
+    double slope
+) const
+{
+    // The derivative of the potential along the line is piecewise linear
+    // and non-decreasing: a spring without a bond pulls nothing, so its
+    // term has a kink where its gap passes zero. Shear terms are those of
+    // the assumed states (friction has no potential)
+    struct line { double gap, rate, kN; bool oneSided; };
+    std::vector<line> springs;
+    springs.reserve(active_.size());
+    double a = curvature, b = slope;
+    for (const active& c : active_)
+    {
+        const contactState s = c.record.state;
+        const double dh = along(c.h, delta);
+        if (s == contactState::bonded)
+        {
+            a += c.kS*dh*dh;
+            b += (c.kS*along(c.h, dd) - c.shearForce0)*dh;
+        }
+        else if (s == contactState::sliding)
+        {
+            b -= c.friction*dh;
+        }
+        const bool bond = c.record.bondIntact && isClosed(s);
+        springs.push_back({c.gap0 + along(c.g, dd), along(c.g, delta), c.kN, !bond});
+    }
+    const auto derivative = [&](double alpha)
+    {
+        double d = a*alpha + b;
+        for (const line& l : springs)
+        {
+            const double gap = l.gap + alpha*l.rate;
+            if (!l.oneSided || gap < 0) d += l.kN*gap*l.rate;
+        }
+        return d;
+    };
+
+    const double d0 = derivative(0);
+    const double d1 = derivative(1);
+    if (!(d0 < 0) || d1 <= 0) return 1;
+
+    // Between two neighbouring kinks the derivative is linear
+    std::vector<double> kinks{0.0, 1.0};
+    for (const line& l : springs)
+    {
+        const double at = l.rate != 0 ? -l.gap/l.rate : -1;
+        if (l.oneSided && at > 0 && at < 1) kinks.push_back(at);
+    }
+    std::sort(kinks.begin(), kinks.end());
+    std::size_t lo = 0, hi = kinks.size() - 1;
+    double dLo = d0, dHi = d1;
+    while (hi - lo > 1)
+    {
+        const std::size_t mid = (lo + hi)/2;
+        const double dMid = derivative(kinks[mid]);
+        if (dMid < 0) { lo = mid; dLo = dMid; }
+        else { hi = mid; dHi = dMid; }
+    }
+    return kinks[lo] - dLo*(kinks[hi] - kinks[lo])/(dHi - dLo);
+}
+
+
 contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
 {
     iterationCounts counts;
@@ -441,23 +509,11 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
             d.state = contactState::bonded;
             d.frictionForce = 0;
         }
-        if
-        (
-            settings_.holdChattering
-         && isClosed(r.state) && !isClosed(d.state)
-         && a.changes >= maxChangesPerStep && !d.bondBroken
-        )
-        {
-            // Held closed: held open, its vertex would pass into the other
-            // body unseen
-            ++counts.held;
-            d.state = r.state;
-            d.frictionForce = a.friction;
-        }
         if (d.state != r.state)
         {
             ++counts.changes;
             ++a.changes;
+            if (a.changes >= maxChangesPerStep) ++counts.chattering;
         }
         if (d.bondBroken) ++counts.bondsBroken;
         r.normalForce = isClosed(r.state) ? q.Fn : 0;

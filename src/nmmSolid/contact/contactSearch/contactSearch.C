@@ -33,17 +33,24 @@ vec outwardNormal(const vec& a, const vec& b)
 }
 
 
+//- The angle by which the boundary turns at vertex i (left positive), 0
+//  at the ends of an open loop
+double turnAt(const contactLoop& l, int i)
+{
+    const int p = l.prevVertex(i);
+    const int q = l.nextVertex(i);
+    if (p < 0 || q < 0) return 0;
+    const vec a = l.vertices[i].x - l.vertices[p].x;
+    const vec b = l.vertices[q].x - l.vertices[i].x;
+    return std::atan2(a.x()*b.y() - a.y()*b.x(), a.dot(b));
+}
+
+
 //- The boundary turns right at vertex i by more than the tolerance: the
 //  material surrounds it, so it cannot be the vertex of a contact
 bool isReflex(const contactLoop& l, int i, double angleTolerance)
 {
-    const int p = l.prevVertex(i);
-    const int q = l.nextVertex(i);
-    if (p < 0 || q < 0) return false;
-    const vec a = l.vertices[i].x - l.vertices[p].x;
-    const vec b = l.vertices[q].x - l.vertices[i].x;
-    const double turn = std::atan2(a.x()*b.y() - a.y()*b.x(), a.dot(b));
-    return turn < -angleTolerance;
+    return turnAt(l, i) < -angleTolerance;
 }
 
 
@@ -77,6 +84,12 @@ public:
         signed char& f = flag_[start_[loop] + v];
         if (f < 0) f = isReflex(loops_[loop], v, angleTolerance_);
         return f;
+    }
+
+    //- The boundary turns by less than the tolerance at the vertex
+    bool flat(int loop, int v) const
+    {
+        return std::abs(turnAt(loops_[loop], v)) <= angleTolerance_;
     }
 };
 
@@ -159,6 +172,22 @@ double project
 auto key(const contactCandidate& c)
 {
     return std::make_tuple(c.vertexLoop, c.vertex, c.edgeLoop, c.edge);
+}
+
+
+//- The edge next to e across its start (side 0) or end (side 1),
+//  skipping zero-length edges; -1 past the end of an open loop
+int neighbourEdge(const contactLoop& el, int e, int side)
+{
+    const int n = int(el.nEdges());
+    for (int step = 1; step < n; ++step)
+    {
+        const int k = side ? e + step : e - step;
+        if (!el.closed && (k < 0 || k >= n)) return -1;
+        const int m = (k%n + n)%n;
+        if ((el.edgeEnd(m).x - el.edgeStart(m).x).squaredNorm() > 0) return m;
+    }
+    return -1;
 }
 
 
@@ -297,21 +326,6 @@ class pairSearch
             && (f.edgesAway < 2 || -c.gap <= f.distance + depthTolerance*d_);
     }
 
-    //- The edge next to e across its start (side 0) or end (side 1),
-    //  skipping zero-length edges; -1 past the end of an open loop
-    int neighbour(const contactLoop& el, int e, int side) const
-    {
-        const int n = int(el.nEdges());
-        for (int step = 1; step < n; ++step)
-        {
-            const int k = side ? e + step : e - step;
-            if (!el.closed && (k < 0 || k >= n)) return -1;
-            const int m = (k%n + n)%n;
-            if ((el.edgeEnd(m).x - el.edgeStart(m).x).squaredNorm() > 0) return m;
-        }
-        return -1;
-    }
-
     //- Whether the candidate's vertex lies inside the edge loop's body,
     //  judged at the boundary feature nearest to it: from the candidate's
     //  edge, step to a neighbouring edge while that is closer. Nearest to
@@ -327,7 +341,7 @@ class pairSearch
         for (std::size_t step = 0; step < el.nEdges(); ++step)
         {
             const int side = here.t > 0.5;
-            const int k = neighbour(el, e, side);
+            const int k = neighbourEdge(el, e, side);
             if (k < 0) break;
             const projection there = projectOn(x, el, k);
             if (there.distance < here.distance)
@@ -623,6 +637,86 @@ double mergedLength(const contactCandidate& p, const contactCandidate& c)
 }
 
 
+//- Whether c's edge is the piece of a face its vertex faces: no
+//  neighbouring edge across a flat vertex (the same straight or gently
+//  curved face) is nearer to it. Across a corner the neighbour is another
+//  face, which the vertex may reach within the step
+bool facesItsEdge
+(
+    const std::vector<contactLoop>& loops,
+    const contactCandidate& c,
+    const reflexFlags& flags
+)
+{
+    const contactLoop& el = loops[c.edgeLoop];
+    const vec& x = loops[c.vertexLoop].vertices[c.vertex].x;
+    const projection here = projectOn(x, el, c.edge);
+    const double length = (el.edgeEnd(c.edge).x - el.edgeStart(c.edge).x).norm();
+    const double tol = 1e-9*std::max(length, here.distance);
+    const int n = int(el.vertices.size());
+    for (int side = 0; side < 2; ++side)
+    {
+        const int k = neighbourEdge(el, c.edge, side);
+        if (k < 0) continue;
+        const int corner = side ? (c.edge + 1)%n : c.edge;
+        if (!flags.flat(c.edgeLoop, corner)) continue;
+        if (projectOn(x, el, k).distance < here.distance - tol) return false;
+    }
+    return true;
+}
+
+
+//- Of the records of one vertex against one loop (consecutive in key
+//  order), those against a face it faces (facesItsEdge); the nearest when
+//  none does. A search distance longer than the edges (loops cut by the
+//  cover) brings a vertex within reach of many edges of one face, whose
+//  lines past their ends are not the surface: springs on them would
+//  constrain the vertex several times, against surfaces that are not there
+std::vector<contactCandidate> nearestFaces
+(
+    const std::vector<contactLoop>& loops,
+    const std::vector<contactCandidate>& sorted,
+    const reflexFlags& flags
+)
+{
+    std::vector<contactCandidate> result;
+    result.reserve(sorted.size());
+    const auto sameGroup = [](const contactCandidate& x, const contactCandidate& y)
+    {
+        return x.vertexLoop == y.vertexLoop && x.vertex == y.vertex
+            && x.edgeLoop == y.edgeLoop;
+    };
+    for (auto first = sorted.begin(); first != sorted.end();)
+    {
+        auto last = first + 1;
+        while (last != sorted.end() && sameGroup(*first, *last)) ++last;
+        if (last - first == 1)
+        {
+            result.push_back(*first);
+            first = last;
+            continue;
+        }
+        const std::size_t kept = result.size();
+        auto nearest = first;
+        double nearestDistance = std::numeric_limits<double>::infinity();
+        for (auto c = first; c != last; ++c)
+        {
+            if (facesItsEdge(loops, *c, flags)) result.push_back(*c);
+            contactCandidate k = *c;
+            const double dist = project(loops, k);
+            if (dist < nearestDistance)
+            {
+                nearest = c;
+                nearestDistance = dist;
+            }
+        }
+        if (result.size() == kept) result.push_back(*nearest);
+        first = last;
+    }
+    return result;
+}
+
+
 //- Sort, merge repeated (vertex, edge) records (an edge-to-edge record
 //  wins), and keep one record where a vertex lies at the common vertex of
 //  two adjacent edges it was matched with; merged records keep their
@@ -675,7 +769,7 @@ std::vector<contactCandidate> tidy
         }
         result.push_back(c);
     }
-    return result;
+    return nearestFaces(loops, result, reflex);
 }
 
 //- Box of a loop's vertices enlarged by d

@@ -117,7 +117,6 @@ void nmmSolidModel::createContacts()
     s.touchTolerance = 1e-6*s.searchDistance;
     penetrationLimit_ = 0.4*s.searchDistance;
     s.overlapRelief = 0.1*penetrationLimit_;
-    s.holdChattering = !parts_.scheme.dynamic();
     contacts_ = std::make_unique<contactModel>
     (
         *parts_.cover, *parts_.elements, *parts_.geometry, *assembler_,
@@ -272,6 +271,11 @@ bool nmmSolidModel::solveWithContacts
     const int maxIterations = parts_.controls
         ? parts_.controls->contact().maxOpenCloseIterations : contactSettings().maxOpenCloseIterations;
     bool settled = false;
+    // Contacts that open and close in turn make the iteration damped from
+    // then on: each solve's increment is taken only as far as it lowers
+    // the step's potential, which cannot cycle
+    bool damped = false;
+    dd = Eigen::VectorXd::Zero(n);
     for (int it = 1; it <= maxIterations && !settled; ++it)
     {
         clock = cpuTime();
@@ -280,16 +284,27 @@ bool nmmSolidModel::solveWithContacts
         const Eigen::VectorXd f = sys.f + contacts_->forces(n);
         timing_["contact assembly"] += clock.elapsed();
 
-        dd = solveSystem(K, f, dt);
+        const Eigen::VectorXd delta = solveSystem(K, f, dt) - dd;
 
         clock = cpuTime();
+        double alpha = 1;
+        if (damped)
+        {
+            const Eigen::VectorXd Kdelta = sys.K*delta;
+            alpha = contacts_->stepLength
+            (
+                dd, delta, delta.dot(Kdelta), Kdelta.dot(dd) - delta.dot(sys.f)
+            );
+        }
+        dd += alpha*delta;
         const auto counts = contacts_->update(dd);
+        damped = damped || counts.chattering > 0;
         timing_["contact update"] += clock.elapsed();
         report.iterations = it;
         report.contacts = counts.states;
         report.bondsBroken += counts.bondsBroken;
-        logIteration(it, counts);
-        settled = counts.changes == 0 && counts.frictionUpdates == 0;
+        logIteration(it, counts, alpha);
+        settled = alpha == 1 && counts.changes == 0 && counts.frictionUpdates == 0;
     }
 
     report.maxPenetration = contacts_->maxPenetration();
@@ -369,15 +384,21 @@ void nmmSolidModel::setInitialVelocity(const initialVelocity& U)
 }
 
 
-void nmmSolidModel::logIteration(int it, const contactModel::iterationCounts& c) const
+void nmmSolidModel::logIteration
+(
+    int it,
+    const contactModel::iterationCounts& c,
+    double stepLength
+) const
 {
     if (!log_) return;
     *log_ << "    open-close " << it << ": open " << c.states[0]
         << ", bonded " << c.states[1] << ", sliding " << c.states[2]
         << "; changes " << c.changes;
     if (c.frictionUpdates) *log_ << ", friction updates " << c.frictionUpdates;
-    if (c.held) *log_ << ", held " << c.held;
+    if (c.chattering) *log_ << ", chattering " << c.chattering;
     if (c.bondsBroken) *log_ << ", bonds broken " << c.bondsBroken;
+    if (stepLength < 1) *log_ << ", step length " << stepLength;
     *log_ << '\n';
 }
 
