@@ -311,6 +311,65 @@ TEST(contactSearch, vertexPastAShortEdgeIsNotInside)
 }
 
 
+// A cylinder's lower side as chords of 0.005 (turning by 0.005 rad, a
+// flat vertex at the default angle tolerance) over a floor cut in pieces
+// of 0.005, the search distance 0.012 reaching five pieces either way:
+// each vertex keeps one contact against the other body, on the piece it
+// lies over (Hertz's contact had up to 15 per vertex, against chord lines
+// that past their ends lie below the cylinder). A square's corner between
+// two floors meeting at a right angle keeps both faces
+TEST(contactSearch, oneContactPerVertexAndFace)
+{
+    const double d = 0.012, R = 1, chord = 0.005;
+    // Counter-clockwise (material on the left): the arc from left to
+    // right, then the top; the floor's bottom, then its top from right to
+    // left, cut where the arc is not
+    std::vector<V> cylinder;
+    for (int k = -40; k <= 40; ++k)
+    {
+        const double t = k*chord/R;
+        cylinder.emplace_back(R*std::sin(t), R*(1 - std::cos(t)) + 1e-4);
+    }
+    cylinder.emplace_back(0.2, 0.3);
+    cylinder.emplace_back(-0.2, 0.3);
+    std::vector<V> floor{{-0.3, -0.1}, {0.3, -0.1}, {0.3, 0}};
+    for (int k = 59; k >= -59; --k) floor.emplace_back(k*chord + 0.0013, 0.0);
+    const std::vector<contactLoop> loops{loop(0, floor), loop(1, cylinder)};
+
+    const auto c = contactSearch(d).find(loops);
+    std::map<std::pair<int, int>, int> perVertex;
+    for (const auto& k : c)
+    {
+        ++perVertex[{k.vertexLoop, k.vertex}];
+        const auto& el = loops[k.edgeLoop];
+        const V& x = loops[k.vertexLoop].vertices[k.vertex].x;
+        const double a = el.edgeStart(k.edge).x.x(), b = el.edgeEnd(k.edge).x.x();
+        EXPECT_LE(std::min(a, b), x.x() + 1e-12) << "vertex " << k.vertex
+            << " of loop " << k.vertexLoop << " is not over edge " << k.edge;
+        EXPECT_GE(std::max(a, b), x.x() - 1e-12) << "vertex " << k.vertex
+            << " of loop " << k.vertexLoop << " is not over edge " << k.edge;
+    }
+    ASSERT_GT(perVertex.size(), 10u);
+    for (const auto& [v, n] : perVertex)
+    {
+        EXPECT_EQ(n, 1) << "vertex " << v.second << " of loop " << v.first;
+    }
+
+    // A corner 1e-3 from both faces of a right-angled notch
+    const std::vector<contactLoop> notch
+    {
+        loop(0, {{-1, -1}, {1, -1}, {1, 0}, {0.5, 0}, {0, 0}, {0, 0.5}, {0, 1}, {-1, 1}}),
+        loop(1, {{0.001, 0.001}, {0.5, 0.001}, {0.5, 0.5}, {0.001, 0.5}})
+    };
+    int atCorner = 0;
+    for (const auto& k : contactSearch(d).find(notch))
+    {
+        if (k.vertexLoop == 1 && k.vertex == 0) ++atCorner;
+    }
+    EXPECT_EQ(atCorner, 2);
+}
+
+
 // A grain's bottom face cut into three pieces by the cover, then a steep
 // face up to the right; another grain's apex 1e-6 into the bottom face
 // near its left end (a settling pile). Behind the steep face's line the

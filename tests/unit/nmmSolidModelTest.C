@@ -17,6 +17,7 @@
 #include <iostream>
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 namespace nm = nmm;
@@ -417,4 +418,68 @@ TEST(nmmSolidModel, contactHistorySurvivesARestart)
         EXPECT_EQ(a.point, b.point);
         EXPECT_EQ(a.normal, b.normal);
     }
+}
+
+// A soft cylinder's lower side (R = 1, E = 1, chords of 0.005) pressed on
+// a stiff flat (E = 1e4) whose top is cut into pieces of 0.005, half
+// model, static and frictionless (the Hertz case, smaller): the vertices
+// of both faces meet all along the contact zone, and the open-close
+// iteration chatters (without damped steps it does not settle in 60
+// iterations). It must settle to a solution of the contact problem: no
+// closed contact pulls, no open one penetrates, the forces carry the load
+TEST(nmmSolidModel, staticContactSettlesWithoutTension)
+{
+    std::ostringstream upper, lower;
+    upper.precision(12);
+    upper << "(0 0.3) (0 0)";
+    for (int k = 1; k <= 60; ++k)
+    {
+        upper << " (" << std::sin(0.005*k) << ' ' << 1 - std::cos(0.005*k) << ')';
+    }
+    upper << " (" << std::sin(0.3) << " 0.3)";
+    lower << "(0 0) (0 -0.1) (0.35 -0.1) (0.35 0)";
+    for (int k = 1; k < 70; ++k) lower << " (" << 0.35 - 0.005*k << " 0)";
+    testCase c
+    (
+        "upper { material soft; polygon (" + upper.str() + "); }"
+        "lower { material stiff; polygon (" + lower.str() + "); }",
+        "loaded { type box; min (-1 0.2999); max (2 0.3001); }"
+        "fixed { type box; min (-1 -0.1001); max (2 -0.0999); }"
+        "symmetry { type box; min (-1e-9 -1); max (1e-9 1); }",
+        "type delaunay; cellSize 0.025;"
+        " refineNearBoundaries { cellSize 0.005; distance 0.012; near blocks; }",
+        "analysis static; largeDisplacement no;\n"
+        "contact { normalPenalty auto; shearPenalty auto; searchDistance 0.012;"
+        " maxOpenCloseIterations 60; }\n",
+        "loaded { type tractionDisplacement; traction uniform (0 0 0); pressure uniform 0.015; }"
+        "fixed { type fixedValue; value uniform (0 0 0); }"
+        "symmetry { type fixedNormal; }"
+    );
+    c.dir.write("constant/contactProperties", std::string(header)
+        + "default { law mohrCoulomb; frictionAngle 0; }\n");
+    c.dir.write("constant/mechanicalProperties", std::string(header)
+        + "planeStress no; thickness 1;\nmaterials {"
+          " soft { type linearElastic; E 1; nu 0.3; rho 1; }"
+          " stiff { type linearElastic; E 1e4; nu 0.3; rho 1; } }\n");
+    auto m = c.model();
+    const nm::stepReport r = m->solveStep(1);
+    ASSERT_TRUE(r.converged) << r.cutReason;
+    EXPECT_GT(r.iterations, 3) << "the case no longer makes the iteration chatter";
+    m->acceptStep();
+    const auto s = m->saveState();
+    double vertical = 0, largest = 0;
+    for (const auto& k : s.contacts)
+    {
+        if (!nm::isClosed(k.state))
+        {
+            EXPECT_GE(k.gap, -1e-12) << "open contact penetrating at " << k.point.x();
+            continue;
+        }
+        EXPECT_GE(k.normalForce, 0) << "closed contact pulling at " << k.point.x();
+        largest = std::max(largest, k.normalForce);
+        vertical += k.normalForce*std::abs(k.normal.y());
+    }
+    // The load: pressure 0.015 on the top, of width sin(0.3)
+    EXPECT_NEAR(vertical, 0.015*std::sin(0.3), 1e-6*0.015*std::sin(0.3));
+    EXPECT_GT(largest, 0);
 }
