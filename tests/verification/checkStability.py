@@ -34,6 +34,7 @@ import nmmFrames as nf  # noqa: E402
 
 mc = None           # tutorials/verification/makeCases.py, imported in main
 BIN = None
+PROJECT = None
 
 G = 9.81
 DDA = "{ type DDA; velocityRatio 1; }"
@@ -623,6 +624,52 @@ def marble(work, rep):
     rep.info("largest penetration [m]", r.maxPenetration())
 
 
+# --------------------------------------------------------------------------
+# Hertz's cylinder on a flat over the normal penalty
+
+def hertzPenalty(work, rep):
+    """tutorials/verification/contact/hertz (a cylinder of E = 1 on a flat
+    of E = 1e4, static, frictionless, P/2 = 0.005 on the half model) with
+    the normal penalty 1 to 1e8 times the cylinder's E. Pass: the single
+    step settles, no closed contact pulls, the vertical contact forces
+    carry P/2 within 1%, and the largest penetration falls as 1/kn: from
+    one penalty to the next (x 100) it falls by a factor in [50, 200]."""
+    last = None
+    for ratio in (1, 1e2, 1e4, 1e6, 1e8):
+        case = Path(work)/("hertzPenalty_kn%g" % ratio)
+        if case.exists():
+            shutil.rmtree(case)
+        shutil.copytree(Path(PROJECT)/"tutorials"/"verification"/"contact"/"hertz", case)
+        sol = case/"system"/"nmmSolution"
+        text, n = re.subn(r"normalPenalty\s+auto;", "normalPenalty %g;" % ratio,
+                          sol.read_text())
+        if n != 1:
+            raise SystemExit("%s: no 'normalPenalty auto;' to replace" % sol)
+        sol.write_text(text)
+        r = execute(case, mayFail=True)
+        name = "kn/E %g" % ratio
+        if not isinstance(r, run):
+            rep.upper("%s: run stopped (exit code %d): %s" % (name, r, stopReason(case)), 1, 0)
+            last = None
+            continue
+        common(r, name, rep)
+        rep.upper("%s: steps cut and redone" % name, float(r.cuts), 0)
+        c = nf.contactsOfFrame(nf.readSeries(case)[-1][1])
+        closed = c["contactState"] > 0
+        fn = c["normalForce"][closed]
+        rep.upper("%s: most tension in a closed contact [N]" % name,
+                  float(max(-fn.min(), 0.0)) if fn.size else 0.0, 0)
+        vertical = float((fn*np.abs(c["normal"][closed][:, 1])).sum())
+        rep.relative("%s: vertical contact force / (P/2)" % name, vertical/0.005, 1.0, 0.01)
+        pen = float(c["penetration"].max())
+        rep.info("%s: largest penetration [m]" % name, pen)
+        if last is not None and pen > 0:
+            fall = last/pen
+            rep.upper("%s: penetration fall from kn/100 outside [50, 200]" % name,
+                      0.0 if 50 <= fall <= 200 else fall, 0)
+        last = pen
+
+
 CASES = {
     "restingBlock": restingBlock,
     "inclinePenalty": inclinePenalty,
@@ -632,11 +679,12 @@ CASES = {
     "stiffnessContrast": stiffnessContrast,
     "spinningBlock": spinningBlock,
     "marble": marble,
+    "hertzPenalty": hertzPenalty,
 }
 
 
 def main(argv):
-    global mc, BIN
+    global mc, BIN, PROJECT
     if len(argv) != 4 or argv[0] not in CASES:
         print(__doc__)
         print("Cases: " + " ".join(CASES))
@@ -646,6 +694,7 @@ def main(argv):
     import makeCases
     mc = makeCases
     BIN = Path(binDir).resolve()
+    PROJECT = Path(project).resolve()
     work = Path(work).resolve()
     work.mkdir(parents=True, exist_ok=True)
     rep = nf.report("stability " + name)
