@@ -419,6 +419,26 @@ TEST(Time, stopSignalWritesTheCurrentTimeAndStops)
 }
 
 
+TEST(Time, aRunStoppedAtItsStartKeepsTheInput)
+{
+    // A run that cannot take its first step writes nothing: the start
+    // time's folder is the case's input, which a write would replace
+    const auto dir = freshCase("stopAtStart");
+    writeControlDict(dir, std::string(header) + "endTime 1; deltaT 0.005;"
+        " writeControl timeStep; writeInterval 100;");
+    writeFile(dir / "0" / "D", "input\n");
+    Time runTime(nmm::caseFolder(dir), {});
+    EXPECT_FALSE(runTime.writeIfUnwritten());
+    EXPECT_TRUE(fs::exists(dir / "0" / "D"));
+
+    ++runTime;
+    EXPECT_TRUE(runTime.writeIfUnwritten());
+    EXPECT_FALSE(runTime.writeIfUnwritten());
+    EXPECT_EQ(timeDirs(dir), names({"0", "0.005"}));
+    EXPECT_TRUE(fs::exists(dir / "0" / "D"));
+}
+
+
 TEST(Time, stopSignalAtAWriteTimeWritesOnce)
 {
     const auto dir = freshCase("stopSignalAtWrite");

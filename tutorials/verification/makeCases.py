@@ -957,7 +957,7 @@ HERTZ = {"R": 1.0, "P": 0.01, "E": 1.0, "nu": 0.3, "Eflat": 1e4,
          "fine": 0.005, "fineLength": 0.25, "coarse": 0.05}
 
 
-def hertzCase(c, discOnDisc):
+def hertzCase(c, discOnDisc=False):
     """Half models (x >= 0, symmetry roller on x = 0) of a cylinder of
     radius R pressed by P per unit thickness, static, plane strain,
     frictionless. Upper body: the lower half of the disc of centre (0, R),
@@ -967,15 +967,20 @@ def hertzCase(c, discOnDisc):
     h = HERTZ
     R = h["R"]
     controlDict(c, 1, 1, "Static: one step, loads evaluated at t = 1")
+    # above the gap x^2/(2 Reff) at x = 1.4 a before loading
+    Reff = R/2 if discOnDisc else R
+    reach = (1.4*0.1076)**2/(2*Reff)
     loadStepSolution(c, "static", """\
     method                  penalty;
     normalPenalty           auto;       // 50 x largest E
     shearPenalty            auto;
-    // above the gap x^2/(2R) = 0.0058 at x = a before loading, small
-    // against the curvature of the chords (see ../README.md)
-    searchDistance          0.008;
-    maxOpenCloseIterations  40;
-""")
+    // above the gap x^2/(2R) = %.3g%s at x = 1.4 a before loading:
+    // every contact the load can close is found (see ../README.md)
+    searchDistance          %s;
+    // one step from all contacts open: at the finest chords (0.0025) the
+    // damped iteration settles in 44
+    maxOpenCloseIterations  100;
+""" % (reach, " (R = 1/2)" if discOnDisc else "", fmt(math.ceil(reach*500)/500)))
     if discOnDisc:
         contactMaterials(c, [("disc", h["E"], h["nu"], 1)])
         lower = "disc"

@@ -275,14 +275,13 @@ int run(int argc, char* argv[])
 
         if (!solveStep(runTime, *model, steps))
         {
-            runTime.writeNow();
-            writeFrame();
+            if (runTime.writeIfUnwritten()) writeFrame();
             throw nmm::fatalError
             (
                 "the step from time " + runTime.timeName() + " cannot be resolved "
                 "even with minDeltaT " + shortString(steps.settings().minDeltaT)
                 + " (system/nmmSolution stepControl); the last good time "
-                + runTime.timeName() + " is written"
+                + runTime.timeName() + " is on disk"
             );
         }
         const double dt = runTime.deltaTValue();

@@ -94,17 +94,44 @@ def tributary(x):
     return t
 
 
+def inwardSlide(X, sol):
+    """Tangential surface displacement of the pressed cylinder (half-plane,
+    frictionless, plane strain): u_x = -(1 - 2 nu)(1 + nu)/(2 E) times the
+    load carried over [-x, x]: the surface slides towards the symmetry
+    line."""
+    a = sol.halfWidth()
+    z = np.minimum(np.abs(X)/a, 1.0)
+    carried = sol.peakPressure()*a*(z*np.sqrt(1 - z*z) + np.arcsin(z))
+    return -(1 - 2*sol.nu1)*(1 + sol.nu1)/(2*sol.E1)*carried
+
+
 def hertzLike(out, sol, pScale=1.0, xScale=1.0):
+    """Contacts at the upper body's surface points X (every 0.004, reference
+    configuration) written at their current x = X + u_x, with the element
+    frame of that surface: a ring of triangles between the arc and 0.95 R."""
     h = 0.004
-    x = np.arange(0, 101)*h
-    p = sol.pressure(x/xScale)*pScale/xScale
-    fn = p*tributary(x)*sol.thickness
-    closed = x < sol.halfWidth()*xScale
-    w = contactWriter(out)
-    n = len(x)
-    w.frame(1, 1.0, np.column_stack([x, 0*x]), closed.astype(int), 0*x,
-            np.where(closed, fn, 0), 0*x, np.tile([0.0, -1.0], (n, 1)))
+    X = np.arange(0, 101)*h
+    R = getattr(sol, "R1", sol.R)
+    theta = np.arcsin(X/R)
+    ring = lambda u, v: (v*np.sin(u), R - v*np.cos(u))  # noqa: E731
+    P, cells = ms.gridMesh(theta, np.array([0.95*R, R]), ring)
+    D = np.zeros_like(P)
+    D[:, 0] = inwardSlide(P[:, 0], sol)
+    Z = 0*P
+    w = ms.writer(out)
+    C = ms.centroids(P, cells)
+    w.frame(1, 1.0, P, cells, D, Z, np.zeros((len(P), 6)), 0*C, 0*C,
+            np.zeros((len(cells), 6)))
     w.close()
+    p = sol.pressure(X/xScale)*pScale/xScale
+    fn = p*tributary(X)*sol.thickness
+    closed = X < sol.halfWidth()*xScale
+    x = X + inwardSlide(X, sol)
+    cw = contactWriter(out)
+    n = len(X)
+    cw.frame(1, 1.0, np.column_stack([x, 0*x]), closed.astype(int), 0*x,
+             np.where(closed, fn, 0), 0*x, np.tile([0.0, -1.0], (n, 1)))
+    cw.close()
 
 
 def hertz(out, tamper):

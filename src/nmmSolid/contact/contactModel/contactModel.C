@@ -23,6 +23,10 @@ constexpr double frictionTolerance = 1e-2;
 //- State changes of one contact within a step that make it chatter
 constexpr int maxChangesPerStep = 3;
 
+//- A damped iteration takes the whole increment when the potential falls
+//  by at least this fraction of what its slope at the start promises
+constexpr double sufficientDecrease = 1e-4;
+
 //- Smallest spring weight: a contact at a sliver's vertex (a tiny
 //  tributary length) still resists penetration
 constexpr double minWeight = 0.05;
@@ -404,6 +408,7 @@ double contactModel::stepLength
     std::vector<line> springs;
     springs.reserve(active_.size());
     double a = curvature, b = slope;
+    bool frictionLoads = false;
     for (const active& c : active_)
     {
         const contactState s = c.record.state;
@@ -416,6 +421,7 @@ double contactModel::stepLength
         else if (s == contactState::sliding)
         {
             b -= c.friction*dh;
+            frictionLoads = frictionLoads || c.friction != 0;
         }
         const bool bond = c.record.bondIntact && isClosed(s);
         springs.push_back({c.gap0 + along(c.g, dd), along(c.g, delta), c.kN, !bond});
@@ -443,12 +449,28 @@ double contactModel::stepLength
         if (l.oneSided && at > 0 && at < 1) kinks.push_back(at);
     }
     std::sort(kinks.begin(), kinks.end());
+    std::vector<double> dAt(kinks.size());
+    for (std::size_t i = 0; i < kinks.size(); ++i) dAt[i] = derivative(kinks[i]);
+
+    // Without friction the potential is the same in every iteration, and
+    // the full step is taken when it lowers it enough (Armijo): the solve
+    // knows the contacts the step reaches, the line's minimum stops at the
+    // first that resists. Friction loads change from solve to solve, so
+    // with them only the minimum keeps the states from cycling. The
+    // trapezoidal rule integrates the piecewise linear derivative exactly
+    double fall = 0;
+    for (std::size_t i = 1; i < kinks.size(); ++i)
+    {
+        fall += 0.5*(dAt[i] + dAt[i - 1])*(kinks[i] - kinks[i - 1]);
+    }
+    if (!frictionLoads && fall <= sufficientDecrease*d0) return 1;
+
     std::size_t lo = 0, hi = kinks.size() - 1;
     double dLo = d0, dHi = d1;
     while (hi - lo > 1)
     {
         const std::size_t mid = (lo + hi)/2;
-        const double dMid = derivative(kinks[mid]);
+        const double dMid = dAt[mid];
         if (dMid < 0) { lo = mid; dLo = dMid; }
         else { hi = mid; dHi = dMid; }
     }

@@ -321,10 +321,7 @@ void Time::stopOnSignal()
     endTime_ = value_;
 
     const bool steppedSinceStart = timeIndex_ != startTimeIndex_;
-    if (steppedSinceStart && lastWrittenIndex_ != timeIndex_)
-    {
-        writeNow();
-    }
+    writeIfUnwritten();
 
     log() << "\nStopped by " << stopSignals::signalName(sig) << " at time = "
         << name_;
@@ -364,6 +361,18 @@ bool Time::writeNow()
 {
     writeTime_ = true;
     return write();
+}
+
+
+bool Time::writeIfUnwritten()
+{
+    // Rewriting the start time would replace the initial fields with the
+    // solver's state files
+    if (timeIndex_ == startTimeIndex_ || lastWrittenIndex_ == timeIndex_)
+    {
+        return false;
+    }
+    return writeNow();
 }
 
 
