@@ -1187,15 +1187,20 @@ def bondedTension():
 
 def bondedShear(sigmaMPa):
     """Double shear: a middle block 1.2 L x 0.2 between a bottom block
-    (fixed at its bottom) and a top block (rollers on its sides, pressure
-    sigma_n on its top), both L long, bonded to it along y = 0 and y = 0.2
-    (two interfaces of length L). The middle block is pulled in x by a
-    traction on its right edge growing so that the shear of each interface
-    grows by a 40th of its peak c L + sigma_n L tan(phi) a step.
-    Symmetric: the pull acts on the mid-plane of the middle block, so the
-    interfaces carry no moment. The blocks are nearly rigid (E = 1e13
-    against springs of 1e9 N/m): every contact of an interface slips by the
-    same amount."""
+    (its bottom on rollers) and a top block (pressure sigma_n on its top),
+    both L long, bonded to it along y = 0 and y = 0.2 (two interfaces of
+    length L). The middle block is pulled in x by a traction on its right
+    edge growing so that the shear of each interface reaches its peak
+    c L + sigma_n L tan(phi) half-way between steps 40 and 41: at a step
+    that reaches the peak exactly, rounding would decide whether the bond
+    holds. The outer blocks are held in
+    x by rollers on their sides next to the interfaces, the same for both:
+    the pull acts on the mid-plane of the middle block and the two
+    interfaces share it equally, with (almost) no moment. The blocks are
+    nearly rigid (E = 1e14 against springs of 1e9 N/m), so that every
+    contact of an interface slips by the same amount: with E = 1e13 the
+    middle block's stretch under the pull loaded the contacts at its
+    pulled end 1.5% above the mean (shear lag), and they broke first."""
     c = "contact/bondedShear/sigma%d" % sigmaMPa
     b = BOND
     L = b["L"]
@@ -1203,10 +1208,13 @@ def bondedShear(sigmaMPa):
     sn = sigmaMPa*1e6
     h = 0.2
     cell = 0.0125
+    # the rollers' height: the arm of the interface's shear about them
+    roller = 0.001
     peak = b["c"]*L + sn*L*math.tan(math.radians(b["phi"]))
+    atPeak = n + 0.5
     quasiStaticControls(c, n + b["extraSteps"],
-                        "Quasi-static: %d load steps of a 40th of the peak"
-                        % (n + b["extraSteps"]))
+                        "Quasi-static: %d load steps, the peak at step %s"
+                        % (n + b["extraSteps"], fmt(atPeak)))
     loadStepSolution(c, "dynamic", """\
     method                  penalty;
     normalPenalty           1e9;        // soft against the blocks
@@ -1214,49 +1222,57 @@ def bondedShear(sigmaMPa):
     searchDistance          0.005;
     maxOpenCloseIterations  20;
 """, LOAD_STEP_CONTROL)
-    contactMaterials(c, [("rock", "1e13", "0", "1e10")])
+    contactMaterials(c, [("rock", "1e14", "0", "1e10")])
     bondedLaw(c)
+    y = lambda v: fmt(round(v, 12))  # noqa: E731
     meshDict(c, """\
-    bottom { material rock; polygon ((0 %s) (%s %s) (%s 0) (0 0)); }
+    bottom { material rock; polygon ((0 %s) (%s %s) (%s %s) (%s 0) (0 0) (0 %s)); }
     middle { material rock; polygon ((%s 0) (%s 0) (%s %s) (%s %s)); }
     top    { material rock; polygon ((0 %s) (%s %s) (%s %s) (%s %s) (0 %s) (0 %s)); }
-""" % (fmt(-h), fmt(L), fmt(-h), fmt(L),
-       fmt(-0.1*L), fmt(1.1*L), fmt(1.1*L), fmt(h), fmt(-0.1*L), fmt(h),
-       fmt(h), fmt(L), fmt(h), fmt(L), fmt(round(h + cell, 12)), fmt(L), fmt(2*h), fmt(2*h),
-       fmt(round(h + cell, 12))), """\
+""" % (y(-h), fmt(L), y(-h), fmt(L), y(-roller), fmt(L), y(-roller),
+       fmt(-0.1*L), fmt(1.1*L), fmt(1.1*L), y(h), fmt(-0.1*L), y(h),
+       y(h), fmt(L), y(h), fmt(L), y(h + roller), fmt(L), y(2*h), y(2*h),
+       y(h + roller)), """\
     pulled      { type box; min (%s -1e-9); max (2 %s); }
-    fixed       { type box; min (-1 -1); max (2 %s); }
+    supported   { type box; min (-1 -1); max (2 %s); }
     pressed     { type box; min (-1 %s); max (2 1); }
+    bottomLeft  { type box; min (-1e-9 %s); max (1e-9 1e-9); }
+    bottomRight { type box; min (%s %s); max (%s 1e-9); }
     topLeft     { type box; min (-1e-9 %s); max (1e-9 %s); }
     topRight    { type box; min (%s %s); max (%s %s); }
-""" % (fmt(1.1*L - 1e-9), fmt(h + 1e-9), fmt(-h + 1e-9), fmt(2*h - 1e-9),
-       fmt(h - 1e-9), fmt(round(h + cell + 1e-9, 12)), fmt(L - 1e-9), fmt(h - 1e-9), fmt(L + 1e-9),
-       fmt(round(h + cell + 1e-9, 12))), """\
+""" % (fmt(1.1*L - 1e-9), y(h + 1e-9), y(-h + 1e-9), y(2*h - 1e-9),
+       y(-roller - 1e-9),
+       fmt(L - 1e-9), y(-roller - 1e-9), fmt(L + 1e-9),
+       y(h - 1e-9), y(h + roller + 1e-9),
+       fmt(L - 1e-9), y(h - 1e-9), fmt(L + 1e-9), y(h + roller + 1e-9)), """\
     type        structured;
     cellSize    %s;
 """ % fmt(cell))
     D(c, """\
-    // Twice the interface peak %s N/m over the height %s at step %d
+    // Twice the interface peak %s N/m over the height %s at step %s
     pulled
     {
         type        tractionDisplacement;
-        traction    table ((0 (0 0 0)) (%d (%s 0 0)) (%d (%s 0 0)));
+        traction    table ((0 (0 0 0)) (%s (%s 0 0)) (%s (%s 0 0)));
         pressure    uniform 0;
     }
-    fixed       { type fixedValue; value uniform (0 0 0); }
+    supported   { type fixedNormal; }
     pressed
     {
         type        tractionDisplacement;
         traction    uniform (0 0 0);
         pressure    uniform %s;
     }
-    // Rollers on the lowest cell of the top block's sides: it may move
-    // only in y, held in x close to the interface's plane, so that the
-    // interface's shear puts (almost) no moment on it and the normal
-    // stress stays uniform
+    // Rollers on the %s of the outer blocks' sides next to the
+    // interfaces: they move only in y, held in x close to the interfaces'
+    // planes, so that the interfaces' shear puts (almost) no moment on
+    // them, and both interfaces are held alike
+    bottomLeft  { type fixedNormal; }
+    bottomRight { type fixedNormal; }
     topLeft     { type fixedNormal; }
     topRight    { type fixedNormal; }
-""" % (fmt(peak), fmt(h), n, n, fmt(2*peak/h), 2*n, fmt(4*peak/h), fmt(sn)))
+""" % (fmt(peak), fmt(h), fmt(atPeak), fmt(atPeak), fmt(2*peak/h), fmt(2*atPeak),
+       fmt(4*peak/h), fmt(sn), fmt(roller)))
     scripts(c, "checkBondedInterface.py")
 
 
