@@ -23,6 +23,10 @@ constexpr double frictionTolerance = 1e-2;
 //- State changes of one contact within a step that make it chatter
 constexpr int maxChangesPerStep = 3;
 
+//- The slope along a solve's increment at its end, relative to that at
+//  its start, below which the end is the minimum (rounding)
+constexpr double endSlope = 1e-9;
+
 //- A damped iteration takes the whole increment when the potential falls
 //  by at least this fraction of what its slope at the start promises
 constexpr double sufficientDecrease = 1e-4;
@@ -437,9 +441,11 @@ double contactModel::stepLength
         return d;
     };
 
+    // A solve that changed no state ends at the minimum, where the slope
+    // is zero up to rounding: that end is the minimum, not a step short
     const double d0 = derivative(0);
     const double d1 = derivative(1);
-    if (!(d0 < 0) || d1 <= 0) return 1;
+    if (!(d0 < 0) || d1 <= endSlope*(-d0)) return 1;
 
     // Between two neighbouring kinks the derivative is linear
     std::vector<double> kinks{0.0, 1.0};
