@@ -1,10 +1,12 @@
 #include "nmmSolid/contact/contactModel/contactModel.H"
 
+
 #include "nmmSolid/cover/physicalCover/physicalCover.H"
 #include "nmmSolid/solver/assembler/nmmAssembler.H"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace nmm
@@ -34,6 +36,22 @@ constexpr double sufficientDecrease = 1e-4;
 //- Smallest spring weight: a contact at a sliver's vertex (a tiny
 //  tributary length) still resists penetration
 constexpr double minWeight = 0.05;
+
+
+//- The rounding of a gap: a few units of the last place of the largest
+//  coordinate of the loops' vertices
+double gapRounding(const std::vector<contactLoop>& loops)
+{
+    double largest = 0;
+    for (const contactLoop& loop : loops)
+    {
+        for (const contactVertex& v : loop.vertices)
+        {
+            largest = std::max(largest, v.x.cwiseAbs().maxCoeff());
+        }
+    }
+    return 64*std::numeric_limits<double>::epsilon()*std::max(largest, 1.0);
+}
 
 
 //- Median tributary length of the loops' vertices, 1 without vertices
@@ -116,6 +134,7 @@ contactModel::contactModel
     thickness_(thickness),
     boundaries_(cover, pc, geometry),
     referenceLength_(medianTributaryLength(boundaries_.loops())),
+    gapRounding_(gapRounding(boundaries_.loops())),
     search_(s.searchDistance)
 {}
 
@@ -560,9 +579,12 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
             a.frictionChange = friction - a.friction;
             // A contact that barely touches has a friction load of the
             // size of rounding: it is measured against the force of a
-            // spring compressed by the touch tolerance
+            // spring compressed by the rounding of a gap. (The touch
+            // tolerance is no rounding for a stiff spring: at kN/E = 1e6
+            // its force outweighed a block, and no friction load counted
+            // as changed)
             const double scale =
-                std::max(std::abs(friction), a.kN*settings_.touchTolerance);
+                std::max(std::abs(friction), a.kN*gapRounding_);
             if (std::abs(a.frictionChange) > frictionTolerance*scale)
             {
                 ++counts.frictionUpdates;
