@@ -577,18 +577,16 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
             const double change = friction - a.friction;
             if (change*a.frictionChange < 0) friction = a.friction + 0.5*change;
             a.frictionChange = friction - a.friction;
-            // A contact that barely touches has a friction load of the
-            // size of rounding: it is measured against the force of a
-            // spring compressed by the rounding of a gap. (The touch
-            // tolerance is no rounding for a stiff spring: at kN/E = 1e6
-            // its force outweighed a block, and no friction load counted
-            // as changed)
-            const double scale =
-                std::max(std::abs(friction), a.kN*gapRounding_);
-            if (std::abs(a.frictionChange) > frictionTolerance*scale)
+            // A change of the size of a spring's force over the rounding
+            // of a gap is rounding
+            const double scale = std::max(std::abs(friction), a.kN*gapRounding_);
+            const double moved = std::abs(a.frictionChange);
+            if (moved > frictionTolerance*scale) ++counts.frictionUpdates;
+            if (moved > frictionTolerance*a.kN*gapRounding_)
             {
-                ++counts.frictionUpdates;
+                counts.frictionChange += moved;
             }
+            counts.frictionLoad += std::abs(friction);
         }
         r.state = d.state;
         r.bondIntact = d.bondIntact;
@@ -596,6 +594,12 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
         ++counts.states[contactStateNumber(r.state)];
     }
     return counts;
+}
+
+
+bool contactModel::iterationCounts::frictionSettled() const
+{
+    return frictionChange <= frictionTolerance*frictionLoad;
 }
 
 

@@ -304,7 +304,7 @@ bool nmmSolidModel::solveWithContacts
         report.contacts = counts.states;
         report.bondsBroken += counts.bondsBroken;
         logIteration(it, counts, alpha);
-        settled = alpha == 1 && counts.changes == 0 && counts.frictionUpdates == 0;
+        settled = alpha == 1 && counts.changes == 0 && counts.frictionSettled();
     }
 
     report.maxPenetration = contacts_->maxPenetration();
