@@ -1,6 +1,5 @@
 #include "nmmSolid/contact/contactModel/contactModel.H"
 
-
 #include "nmmSolid/cover/physicalCover/physicalCover.H"
 #include "nmmSolid/solver/assembler/nmmAssembler.H"
 
@@ -459,6 +458,18 @@ double contactModel::stepLength
         }
         return d;
     };
+    // The potential's change over the whole increment
+    const auto fall = [&]
+    {
+        double f = 0.5*a + b;
+        for (const line& l : springs)
+        {
+            const double g0 = l.oneSided ? std::min(l.gap, 0.0) : l.gap;
+            const double g1 = l.oneSided ? std::min(l.gap + l.rate, 0.0) : l.gap + l.rate;
+            f += 0.5*l.kN*(g1*g1 - g0*g0);
+        }
+        return f;
+    };
 
     // A solve that changed no state ends at the minimum, where the slope
     // is zero up to rounding: that end is the minimum, not a step short
@@ -474,28 +485,20 @@ double contactModel::stepLength
         if (l.oneSided && at > 0 && at < 1) kinks.push_back(at);
     }
     std::sort(kinks.begin(), kinks.end());
-    std::vector<double> dAt(kinks.size());
-    for (std::size_t i = 0; i < kinks.size(); ++i) dAt[i] = derivative(kinks[i]);
 
     // Without friction the potential is the same in every iteration, and
     // the full step is taken when it lowers it enough (Armijo): the solve
     // knows the contacts the step reaches, the line's minimum stops at the
     // first that resists. Friction loads change from solve to solve, so
-    // with them only the minimum keeps the states from cycling. The
-    // trapezoidal rule integrates the piecewise linear derivative exactly
-    double fall = 0;
-    for (std::size_t i = 1; i < kinks.size(); ++i)
-    {
-        fall += 0.5*(dAt[i] + dAt[i - 1])*(kinks[i] - kinks[i - 1]);
-    }
-    if (!frictionLoads && fall <= sufficientDecrease*d0) return 1;
+    // with them only the minimum keeps the states from cycling
+    if (!frictionLoads && fall() <= sufficientDecrease*d0) return 1;
 
     std::size_t lo = 0, hi = kinks.size() - 1;
     double dLo = d0, dHi = d1;
     while (hi - lo > 1)
     {
         const std::size_t mid = (lo + hi)/2;
-        const double dMid = dAt[mid];
+        const double dMid = derivative(kinks[mid]);
         if (dMid < 0) { lo = mid; dLo = dMid; }
         else { hi = mid; dHi = dMid; }
     }
