@@ -427,7 +427,10 @@ TEST(nmmSolidModel, contactHistorySurvivesARestart)
 // iteration chatters (without damped steps it does not settle in 60
 // iterations). It must settle to a solution of the contact problem: no
 // closed contact pulls, no open one penetrates, the forces carry the load
-TEST(nmmSolidModel, staticContactSettlesWithoutTension)
+//- A soft half-cylinder (E = 1, chords of 0.005) pressed by the top
+//  pressure (a Function1 spelling) on a stiff flat (E = 1e4) cut in pieces
+//  of 0.005: one static step that makes the open-close iteration chatter
+std::unique_ptr<testCase> cylinderOnFlat(int maxIterations, const std::string& pressure)
 {
     std::ostringstream upper, lower;
     upper.precision(12);
@@ -439,7 +442,7 @@ TEST(nmmSolidModel, staticContactSettlesWithoutTension)
     upper << " (" << std::sin(0.3) << " 0.3)";
     lower << "(0 0) (0 -0.1) (0.35 -0.1) (0.35 0)";
     for (int k = 1; k < 70; ++k) lower << " (" << 0.35 - 0.005*k << " 0)";
-    testCase c
+    auto c = std::make_unique<testCase>
     (
         "upper { material soft; polygon (" + upper.str() + "); }"
         "lower { material stiff; polygon (" + lower.str() + "); }",
@@ -450,18 +453,26 @@ TEST(nmmSolidModel, staticContactSettlesWithoutTension)
         " refineNearBoundaries { cellSize 0.005; distance 0.012; near blocks; }",
         "analysis static; largeDisplacement no;\n"
         "contact { normalPenalty auto; shearPenalty auto; searchDistance 0.012;"
-        " maxOpenCloseIterations 60; }\n",
-        "loaded { type tractionDisplacement; traction uniform (0 0 0); pressure uniform 0.015; }"
+        " maxOpenCloseIterations " + std::to_string(maxIterations) + "; }\n",
+        "loaded { type tractionDisplacement; traction uniform (0 0 0); pressure "
+        + pressure + "; }"
         "fixed { type fixedValue; value uniform (0 0 0); }"
         "symmetry { type fixedNormal; }"
     );
-    c.dir.write("constant/contactProperties", std::string(header)
+    c->dir.write("constant/contactProperties", std::string(header)
         + "default { law mohrCoulomb; frictionAngle 0; }\n");
-    c.dir.write("constant/mechanicalProperties", std::string(header)
+    c->dir.write("constant/mechanicalProperties", std::string(header)
         + "planeStress no; thickness 1;\nmaterials {"
           " soft { type linearElastic; E 1; nu 0.3; rho 1; }"
           " stiff { type linearElastic; E 1e4; nu 0.3; rho 1; } }\n");
-    auto m = c.model();
+    return c;
+}
+
+
+TEST(nmmSolidModel, staticContactSettlesWithoutTension)
+{
+    const auto c = cylinderOnFlat(60, "uniform 0.015");
+    auto m = c->model();
     const nm::stepReport r = m->solveStep(1);
     ASSERT_TRUE(r.converged) << r.cutReason;
     EXPECT_GT(r.iterations, 3) << "the case no longer makes the iteration chatter";
@@ -482,4 +493,28 @@ TEST(nmmSolidModel, staticContactSettlesWithoutTension)
     // The load: pressure 0.015 on the top, of width sin(0.3)
     EXPECT_NEAR(vertical, 0.015*std::sin(0.3), 1e-6*0.015*std::sin(0.3));
     EXPECT_GT(largest, 0);
+}
+
+
+TEST(nmmSolidModel, aShorterStaticStepWithConstantLoadsIsFutile)
+{
+    // Two iterations cannot settle the case: the first failed attempt may
+    // be cut, the second, with the same loads at another length, is the
+    // same problem
+    const auto constantCase = cylinderOnFlat(2, "uniform 0.015");
+    auto constant = constantCase->model();
+    const nm::stepReport first = constant->solveStep(1);
+    ASSERT_FALSE(first.converged);
+    EXPECT_FALSE(first.cutIsFutile);
+    const nm::stepReport second = constant->solveStep(0.3);
+    ASSERT_FALSE(second.converged);
+    EXPECT_TRUE(second.cutIsFutile);
+
+    // Loads that grow with time change with the step's length
+    const auto rampedCase = cylinderOnFlat(2, "table ((0 0) (1 0.015))");
+    auto ramped = rampedCase->model();
+    ASSERT_FALSE(ramped->solveStep(1).converged);
+    const nm::stepReport shorter = ramped->solveStep(0.3);
+    ASSERT_FALSE(shorter.converged);
+    EXPECT_FALSE(shorter.cutIsFutile);
 }

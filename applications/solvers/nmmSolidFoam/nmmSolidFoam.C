@@ -128,7 +128,9 @@ nmm::stepController makeStepController
 
 //- Solve the step of runTime's deltaT, cutting it until it can be
 //  accepted; false if even minDeltaT cannot be resolved
-bool solveStep
+//- Solve the step, cutting it until it converges; empty, or why the run
+//  cannot go on
+std::string solveStep
 (
     nmm::Time& runTime,
     nmm::nmmSolidModel& model,
@@ -139,12 +141,24 @@ bool solveStep
     for (;;)
     {
         const nmm::stepReport report = model.solveStep(dt);
-        if (report.converged) return true;
+        if (report.converged) return {};
+        if (report.cutIsFutile)
+        {
+            std::cout << "    step cut: " << report.cutReason << "; no shorter step\n";
+            return report.cutReason + ", and the static step's loads do not change"
+                " with its length, so a shorter step is the same problem (raise"
+                " maxOpenCloseIterations in system/nmmSolution contact)";
+        }
         const auto shorter = steps.cut(dt);
         std::cout << "    step cut: " << report.cutReason << "; deltaT " << dt << " -> ";
         if (shorter) std::cout << *shorter << '\n';
         else std::cout << "none (below minDeltaT)\n";
-        if (!shorter) return false;
+        if (!shorter)
+        {
+            return "it cannot be resolved even with minDeltaT "
+                + shortString(steps.settings().minDeltaT)
+                + " (system/nmmSolution stepControl)";
+        }
         dt = *shorter;
         runTime.setDeltaT(dt, false);
     }
@@ -273,15 +287,15 @@ int run(int argc, char* argv[])
         runTime.setDeltaT(proposal, runTime.adjustTimeStep());
         std::cout << "deltaT = " << runTime.deltaTValue() << '\n';
 
-        if (!solveStep(runTime, *model, steps))
+        const std::string failure = solveStep(runTime, *model, steps);
+        if (!failure.empty())
         {
             if (runTime.writeIfUnwritten()) writeFrame();
             throw nmm::fatalError
             (
-                "the step from time " + runTime.timeName() + " cannot be resolved "
-                "even with minDeltaT " + shortString(steps.settings().minDeltaT)
-                + " (system/nmmSolution stepControl); the last good time "
-                + runTime.timeName() + " is on disk"
+                "the step from time " + runTime.timeName() + " stops the run: "
+                + failure + "; the last good time " + runTime.timeName()
+                + " is on disk"
             );
         }
         const double dt = runTime.deltaTValue();

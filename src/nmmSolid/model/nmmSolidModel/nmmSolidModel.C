@@ -171,6 +171,14 @@ stepReport nmmSolidModel::solveStep(double dt)
     else if (!solveWithContacts(sys, dt, report, dd))
     {
         report.converged = false;
+        if (!parts_.scheme.dynamic())
+        {
+            // Without mass the step's length enters only through the
+            // loads' time dependence
+            report.cutIsFutile = failedLoads_.size() == sys.f.size()
+                && (sys.f - failedLoads_).norm() <= 1e-12*sys.f.norm();
+            failedLoads_ = sys.f;
+        }
         ++cuts_;
         trialReady_ = false;
         return report;
@@ -520,6 +528,7 @@ void nmmSolidModel::acceptStep()
     trialReady_ = false;
     last_.cuts = cuts_;
     cuts_ = 0;
+    failedLoads_.resize(0);
 }
 
 
