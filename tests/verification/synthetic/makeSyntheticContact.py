@@ -10,8 +10,10 @@ Usage:
 case: hertz | discOnDisc | brazilian | bondedTension | bondedShear
 Writes <outDir>/VTK/contacts_<i>.vtp and contacts.vtp.series (points and
 the point data contactState, bondIntact, normalForce, shearForce, normal),
-and for brazilian also the element frame <name>_1.vtu (makeSynthetic.py's
-writer). --tamper writes a wrong solution the checker must reject:
+and for brazilian, hertz and discOnDisc also the element frame
+<name>_1.vtu (makeSynthetic.py's writer; for the Hertz cases the pressed
+surface, slid inwards as Hertz's half-plane predicts, and the contacts at
+its current positions). --tamper writes a wrong solution the checker must reject:
     hertz          contact pressure x 1.07
     discOnDisc     contact zone 15% wider, same load
     brazilian      stresses x 0.96
