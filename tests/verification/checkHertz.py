@@ -110,7 +110,7 @@ def upperSurface(vtu, sol):
 
 def lastFrame(caseDir):
     """The last element frame and the contact frame of the same write."""
-    t, vtu = nf.readSeries(caseDir)[-1]
+    vtu = nf.readSeries(caseDir)[-1][1]
     index = vtu.stem.rsplit("_", 1)[1]
     return vtu, vtu.parent/("contacts_%s.vtp" % index)
 
@@ -138,6 +138,7 @@ def measure(caseDir, sol):
     F = np.cumsum(fn)*thicknessInverse(sol)
     xm = np.append(0.5*(x[1:] + x[:-1]), x[-1])
     use = xm <= 1.5*a
+
     def fit(aTry):
         z = np.minimum(xm[use]/aTry, 1.0)
         g = 0.5*aTry*(z*np.sqrt(1 - z*z) + np.arcsin(z))
