@@ -127,9 +127,7 @@ nmm::stepController makeStepController
 
 
 //- Solve the step of runTime's deltaT, cutting it until it can be
-//  accepted; false if even minDeltaT cannot be resolved
-//- Solve the step, cutting it until it converges; empty, or why the run
-//  cannot go on
+//  accepted; empty, or why the run cannot go on
 std::string solveStep
 (
     nmm::Time& runTime,

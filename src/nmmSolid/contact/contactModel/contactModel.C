@@ -477,6 +477,13 @@ double contactModel::stepLength
     const double d1 = derivative(1);
     if (!(d0 < 0) || d1 <= endSlope*(-d0)) return 1;
 
+    // Without friction the potential is the same in every iteration, and
+    // the full step is taken when it lowers it enough (Armijo): the solve
+    // knows the contacts the step reaches, the line's minimum stops at the
+    // first that resists. Friction loads change from solve to solve, so
+    // with them only the minimum keeps the states from cycling
+    if (!frictionLoads && fall() <= sufficientDecrease*d0) return 1;
+
     // Between two neighbouring kinks the derivative is linear
     std::vector<double> kinks{0.0, 1.0};
     for (const line& l : springs)
@@ -485,13 +492,6 @@ double contactModel::stepLength
         if (l.oneSided && at > 0 && at < 1) kinks.push_back(at);
     }
     std::sort(kinks.begin(), kinks.end());
-
-    // Without friction the potential is the same in every iteration, and
-    // the full step is taken when it lowers it enough (Armijo): the solve
-    // knows the contacts the step reaches, the line's minimum stops at the
-    // first that resists. Friction loads change from solve to solve, so
-    // with them only the minimum keeps the states from cycling
-    if (!frictionLoads && fall() <= sufficientDecrease*d0) return 1;
 
     std::size_t lo = 0, hi = kinks.size() - 1;
     double dLo = d0, dHi = d1;

@@ -637,22 +637,22 @@ double mergedLength(const contactCandidate& p, const contactCandidate& c)
 }
 
 
-//- Whether c's edge is the piece of a face its vertex faces: no
-//  neighbouring edge across a flat vertex (the same straight or gently
-//  curved face) is nearer to it. Across a corner the neighbour is another
-//  face, which the vertex may reach within the step
+//- Whether c's edge, at distance from its vertex, is the piece of a face
+//  the vertex faces: no neighbouring edge across a flat vertex (the same
+//  straight or gently curved face) is nearer to it. Across a corner the
+//  neighbour is another face, which the vertex may reach within the step
 bool facesItsEdge
 (
     const std::vector<contactLoop>& loops,
     const contactCandidate& c,
+    double distance,
     const reflexFlags& flags
 )
 {
     const contactLoop& el = loops[c.edgeLoop];
     const vec& x = loops[c.vertexLoop].vertices[c.vertex].x;
-    const projection here = projectOn(x, el, c.edge);
     const double length = (el.edgeEnd(c.edge).x - el.edgeStart(c.edge).x).norm();
-    const double tol = 1e-9*std::max(length, here.distance);
+    const double tol = 1e-9*std::max(length, distance);
     const int n = int(el.vertices.size());
     for (int side = 0; side < 2; ++side)
     {
@@ -660,7 +660,7 @@ bool facesItsEdge
         if (k < 0) continue;
         const int corner = side ? (c.edge + 1)%n : c.edge;
         if (!flags.flat(c.edgeLoop, corner)) continue;
-        if (projectOn(x, el, k).distance < here.distance - tol) return false;
+        if (projectOn(x, el, k).distance < distance - tol) return false;
     }
     return true;
 }
@@ -701,9 +701,11 @@ std::vector<contactCandidate> nearestFaces
         double nearestDistance = std::numeric_limits<double>::infinity();
         for (auto c = first; c != last; ++c)
         {
-            if (facesItsEdge(loops, *c, flags)) result.push_back(*c);
-            contactCandidate k = *c;
-            const double dist = project(loops, k);
+            const double dist = projectOn
+            (
+                loops[c->vertexLoop].vertices[c->vertex].x, loops[c->edgeLoop], c->edge
+            ).distance;
+            if (facesItsEdge(loops, *c, dist, flags)) result.push_back(*c);
             if (dist < nearestDistance)
             {
                 nearest = c;
