@@ -440,3 +440,75 @@ TEST(functionObject, folderIsNamedAfterTheStartTime)
     list.start();
     EXPECT_TRUE(std::filesystem::exists(c.dir.path/"postProcessing/e/0.5/e.dat"));
 }
+
+
+// * * * * * * * * * * * * * * * * porosity * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The unit square stretched by (1e-3 x, 2e-3 y): it covers
+//  [0, 1.001] x [0, 1.002], and its top edge stays horizontal
+const char* stretchedSides =
+    "left { type edges; edges ((a 3)); } topEdge { type edges; edges ((a 2)); }"
+    "rest { type edges; edges ((a 0) (a 1)); }";
+const char* stretch =
+    "\".*\" { type fixedValue; value expression \"vector(1e-3*x, 2e-3*y, 0)\"; }";
+
+std::vector<double> porosityRow(const std::string& entry)
+{
+    testCase c(square, stretchedSides, staticLinear, stretch,
+        "p { type porosity; materials (rock); " + entry + " }");
+    auto list = c.functions();
+    c.step(1);
+    list.execute();
+    return list[0].lastRow();
+}
+
+} // End anonymous namespace
+
+
+TEST(porosity, solidCrossingTheRegionIsCutExactly)
+{
+    // Region [-1, 2] x [-1, 0.5]: the part of the block below y = 0.5
+    const auto row = porosityRow("min (-1 -1); max (2 0.5);");
+    ASSERT_EQ(row.size(), 5u);
+    EXPECT_NEAR(row[1], 1.001*0.5, 1e-12);
+    EXPECT_NEAR(row[2], 3*1.5, 1e-12);
+    EXPECT_NEAR(row[3], 0.5, 1e-15);
+    EXPECT_NEAR(row[4], 1 - 1.001*0.5/4.5, 1e-12);
+}
+
+
+TEST(porosity, topFollowsTheGrainsOrAPatch)
+{
+    for (const std::string top : {"top grains;", "top patch; topPatch topEdge;"})
+    {
+        const auto row = porosityRow("min (-1 -1); max (2 5); " + top);
+        EXPECT_NEAR(row[3], 1.002, 1e-12) << top;
+        EXPECT_NEAR(row[1], 1.001*1.002, 1e-12) << top;
+        EXPECT_NEAR(row[2], 3*2.002, 1e-12) << top;
+        EXPECT_NEAR(row[4], 1 - 1.001*1.002/(3*2.002), 1e-12) << top;
+    }
+}
+
+
+TEST(porosity, badEntriesNameTheKeyword)
+{
+    const auto message = [](const std::string& entry)
+    {
+        testCase c(square, stretchedSides, staticLinear, stretch,
+            "p { type porosity; " + entry + " }");
+        return errorOfFunctions(c);
+    };
+    EXPECT_TRUE(contains(message("materials (sand); min (0 0); max (1 1);"),
+        "no block is of material 'sand'"));
+    EXPECT_TRUE(contains(message("materials (rock); min (0 0); max (1 1); top patch;"),
+        "needs 'topPatch'"));
+    EXPECT_TRUE(contains(message("materials (rock); min (0 0); max (1 1); top patch;"
+        " topPatch topEgde;"), "did you mean 'topEdge'"));
+    EXPECT_TRUE(contains(message("materials (rock); min (0 0); max (-1 1);"),
+        "max must lie above and right of min"));
+    EXPECT_TRUE(contains(message("materials (rock); min (0 0); max (1 1); top lid;"),
+        "lid"));
+}

@@ -4,6 +4,7 @@
 #include "nmmSolid/functionObjects/contactStatistics/contactStatistics.H"
 #include "nmmSolid/functionObjects/energy/energy.H"
 #include "nmmSolid/functionObjects/patchDisplacement/patchDisplacement.H"
+#include "nmmSolid/functionObjects/porosity/porosity.H"
 
 namespace nmm
 {
@@ -34,7 +35,8 @@ void addBuiltInTypes()
         add<blockMotion>("blockMotion")
      && add<contactStatistics>("contactStatistics")
      && add<energy>("energy")
-     && add<patchDisplacement>("patchDisplacement");
+     && add<patchDisplacement>("patchDisplacement")
+     && add<porosity>("porosity");
     (void)added;
 }
 

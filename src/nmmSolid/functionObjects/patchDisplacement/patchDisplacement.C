@@ -1,52 +1,10 @@
 #include "nmmSolid/functionObjects/patchDisplacement/patchDisplacement.H"
 
+#include "nmmSolid/functionObjects/functionObject/patchSegments.H"
 #include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
-
-#include <algorithm>
 
 namespace nmm
 {
-
-namespace
-{
-
-//- The patch named by 'patch', or an IOerror there with did-you-mean
-const geometryPatch& patchOf
-(
-    const std::string& name,
-    const blockGeometry& geometry,
-    const dictionary& dict
-)
-{
-    const std::string patch = dict.get<std::string>("patch");
-    if (const geometryPatch* p = geometry.findPatch(patch)) return *p;
-
-    std::vector<std::string> names;
-    std::string valid;
-    for (const auto& p : geometry.patches())
-    {
-        names.push_back(p.name);
-        valid += " " + p.name;
-    }
-    std::string msg = "function object '" + name + "': unknown patch '" + patch + "'";
-    const std::string hint = didYouMean(patch, names);
-    if (!hint.empty()) msg += "; " + hint;
-    msg += "\n\nPatches of system/nmmMeshDict:" + valid;
-    throw IOerror(msg, dict.lookupEntry("patch").where(), "patch");
-}
-
-
-bool inPatch(const physicalCover::boundarySegment& s, const geometryPatch& p)
-{
-    if (s.kind == physicalCover::segmentKind::blockEdge)
-    {
-        return std::binary_search(p.edges.begin(), p.edges.end(), s.edge);
-    }
-    return std::binary_search(p.jointFaces.begin(), p.jointFaces.end(), s.face);
-}
-
-} // End anonymous namespace
-
 
 const keywordTable& patchDisplacement::keywords()
 {
@@ -75,12 +33,7 @@ patchDisplacement::patchDisplacement
 :
     functionObject(name, runTime, model, dict, "patchDisplacement", keywords())
 {
-    const geometryPatch& patch = patchOf(name, model.geometry(), dict);
-    const auto& segments = model.elements().segments();
-    for (std::size_t i = 0; i < segments.size(); ++i)
-    {
-        if (inPatch(segments[i], patch)) segments_.push_back(i);
-    }
+    segments_ = patchSegments(name, model, dict, "patch");
     writeHeader({"time", "Dx", "Dy", "length"});
 }
 
