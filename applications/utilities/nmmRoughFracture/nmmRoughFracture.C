@@ -22,6 +22,12 @@ Description
     is 'aperture' (0: they touch at one point). The log gives where that
     point is, and the mean aperture.
 
+    The two faces are also written as patches, 'lowerFace' and
+    'upperFace', to constant/geometry/<output>Patches, for nmmMeshDict's
+    'patches' to include: the mean closure of the fracture is the
+    difference of their mean displacements (function object
+    patchDisplacement).
+
     'columns' adds a confining column of another material on each side,
     'leftColumn' and 'rightColumn', as tall as the box, with a vertex where
     each face meets it so that both blocks share its edge.
@@ -42,6 +48,7 @@ Usage
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <iostream>
 #include <random>
 #include <sstream>
@@ -413,6 +420,20 @@ void addColumns
 }
 
 
+//- The faces as 'edges' patches: the lower block's loop runs along the
+//  bottom, then back along its face; the upper block's starts on its face
+std::string facePatches(std::size_t nLower, std::size_t nUpper)
+{
+    std::ostringstream os;
+    os << "lowerFace { type edges; edges (";
+    for (std::size_t i = 2; i < nLower + 1; ++i) os << " (lower " << i << ")";
+    os << " ); }\nupperFace { type edges; edges (";
+    for (std::size_t i = 0; i + 1 < nUpper; ++i) os << " (upper " << i << ")";
+    os << " ); }\n";
+    return os.str();
+}
+
+
 int run(int argc, char* argv[])
 {
     nmm::argList args("nmmRoughFracture",
@@ -459,8 +480,16 @@ int run(int argc, char* argv[])
     blocks.write(file, "Written by nmmRoughFracture from system/nmmRoughFractureDict:"
         " edit that, not this");
     writeBlockPreview(fs::path(file.string() + ".png"), blocks);
+    std::ofstream patches(file.string() + "Patches");
+    patches << "// Written by nmmRoughFracture: the faces of the fracture\n"
+        << facePatches(lower.size(), upper.size());
+    if (!patches.flush())
+    {
+        throw std::runtime_error("cannot write " + file.string() + "Patches");
+    }
     std::cout << "Wrote " << blocks.size() << " blocks to " << file.string()
-        << " and its preview " << file.string() << ".png\n\nEnd\n";
+        << ", the faces' patches to " << file.string() << "Patches"
+        << " and the preview " << file.string() << ".png\n\nEnd\n";
     return 0;
 }
 
