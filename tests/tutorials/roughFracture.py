@@ -44,7 +44,8 @@ def main(argv):
     if case.exists():
         shutil.rmtree(case)
     case.parent.mkdir(parents=True, exist_ok=True)
-    shutil.copytree(project/"tutorials/paper/roughFracture", case)
+    shutil.copytree(project/"tutorials/paper/roughFracture", case,
+                    ignore=shutil.ignore_patterns("*Case[0-9]", "summary.md"))
     env = dict(os.environ, NMM_PROJECT_DIR=str(project),
                PATH=str(binDir) + os.pathsep + os.environ.get("PATH", ""))
     subprocess.run(["bash", "./Allrun", "-reduced"], cwd=case, env=env, check=False)
