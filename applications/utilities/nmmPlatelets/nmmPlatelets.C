@@ -66,6 +66,7 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "nmmGeometryTools/blockList/blockList.H"
+#include "nmmGeometryTools/boxExtent/boxExtent.H"
 #include "nmmGeometryTools/blockPreview/blockPreview.H"
 #include "nmmSolid/global/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
@@ -141,30 +142,9 @@ const nmm::keywordTable& keywords()
 }
 
 
-const nmm::keywordTable& boxKeywords()
-{
-    static const nmm::keywordTable table = []
-    {
-        nmm::keywordTable t("box", "axis-aligned box");
-        t.vector("min", "lower left corner (x y)", "m").required();
-        t.vector("max", "upper right corner (x y)", "m").required();
-        return t;
-    }();
-    return table;
-}
-
-
-struct box2
-{
-    double x0, y0, x1, y1;
-
-    double area() const { return (x1 - x0)*(y1 - y0); }
-};
-
-
 struct settings
 {
-    box2 box;
+    nmm::boxExtent box;
     bool ellipse;
     int ellipseVertices;
     std::size_t number;
@@ -177,26 +157,12 @@ struct settings
 };
 
 
-box2 readBox(const nmm::dictionary& dict)
-{
-    boxKeywords().validate(dict);
-    const auto lo = dict.get<std::array<double, 2>>("min");
-    const auto hi = dict.get<std::array<double, 2>>("max");
-    if (!(hi[0] > lo[0] && hi[1] > lo[1]))
-    {
-        throw dict.lookupEntry("max").error("box: 'max' must exceed 'min' in "
-            "both x and y (the box has no area)");
-    }
-    return {lo[0], lo[1], hi[0], hi[1]};
-}
-
-
 settings readSettings(const nmm::dictionary& dict)
 {
     const nmm::keywordTable& k = keywords();
     k.validate(dict);
     settings s;
-    s.box = readBox(dict.subDict("box"));
+    s.box = nmm::boxExtent::read(dict.subDict("box"));
     s.ellipse = k.get<std::string>(dict, "shape") == "ellipse";
     s.ellipseVertices = int(k.get<long long>(dict, "ellipseVertices"));
     s.number = std::size_t(k.get<long long>(dict, "number"));
@@ -275,7 +241,7 @@ bool drawPlatelet(const settings& s, std::mt19937_64& rng, platelet& p)
         lo = lo.cwiseMin(q);
         hi = hi.cwiseMax(q);
     }
-    const box2& b = s.box;
+    const nmm::boxExtent& b = s.box;
     const vector2 cLo(b.x0 + s.minGap - lo.x(), b.y0 + s.minGap - lo.y());
     const vector2 cHi(b.x1 - s.minGap - hi.x(), b.y1 - s.minGap - hi.y());
     const double ux = uniform(rng), uy = uniform(rng);
@@ -401,7 +367,7 @@ bool apart(const platelet& p, const platelet& q, double minGap)
 //  centre hold every platelet that can come within minGap of it
 class plateletGrid
 {
-    box2 box_;
+    nmm::boxExtent box_;
     double h_;
     int nx_, ny_;
     std::vector<std::vector<std::size_t>> cells_;
@@ -410,7 +376,7 @@ class plateletGrid
     int row(double y) const { return std::clamp(int((y - box_.y0)/h_), 0, ny_ - 1); }
 
 public:
-    plateletGrid(const box2& b, double reach, std::size_t number)
+    plateletGrid(const nmm::boxExtent& b, double reach, std::size_t number)
     :
         box_(b)
     {
@@ -530,7 +496,7 @@ int run(int argc, char* argv[])
     nmm::argList args("nmmPlatelets",
         "Non-overlapping platelets at random in a box, as blocks for nmmMeshDict");
     args.addKeywordHelp("system/nmmPlateletsDict", keywords());
-    args.addKeywordHelp("system/nmmPlateletsDict, 'box'", boxKeywords());
+    args.addKeywordHelp("system/nmmPlateletsDict, 'box'", nmm::boxExtent::keywords());
     args.setDocumentation
     (
         "Reads system/nmmPlateletsDict and places 'number' rectangles or "

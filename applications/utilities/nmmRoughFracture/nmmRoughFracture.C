@@ -38,6 +38,7 @@ Usage
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include "nmmGeometryTools/blockList/blockList.H"
+#include "nmmGeometryTools/boxExtent/boxExtent.H"
 #include "nmmGeometryTools/blockPreview/blockPreview.H"
 #include "nmmSolid/global/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
@@ -79,18 +80,6 @@ const nmm::keywordTable& keywords()
         t.subDict("columns", "optional confining columns: width, material");
         t.word("output", "name of the file under constant/geometry")
             .defaultValue("fracture");
-        return t;
-    }();
-    return table;
-}
-
-const nmm::keywordTable& boxKeywords()
-{
-    static const nmm::keywordTable table = []
-    {
-        nmm::keywordTable t("box", "an axis-aligned box");
-        t.vector("min", "lower left corner (x y)", "m").required();
-        t.vector("max", "upper right corner (x y)", "m").required();
         return t;
     }();
     return table;
@@ -344,24 +333,7 @@ void lift(profile& upper, const profile& lower, double aperture)
 }
 
 
-struct extent { double x0, y0, x1, y1; };
-
-extent readBox(const nmm::dictionary& dict)
-{
-    const nmm::dictionary& d = dict.subDict("box");
-    boxKeywords().validate(d);
-    const auto lo = boxKeywords().get<std::array<double, 2>>(d, "min");
-    const auto hi = boxKeywords().get<std::array<double, 2>>(d, "max");
-    if (!(hi[0] > lo[0] && hi[1] > lo[1]))
-    {
-        throw nmm::IOerror("the box's max must be above and right of its min",
-            d.where(), "max");
-    }
-    return {lo[0], lo[1], hi[0], hi[1]};
-}
-
-
-void checkInside(const profile& face, const extent& b, const nmm::dictionary& d, const std::string& who)
+void checkInside(const profile& face, const nmm::boxExtent& b, const nmm::dictionary& d, const std::string& who)
 {
     for (const auto& q : face)
     {
@@ -381,7 +353,7 @@ nmm::blockList makeBlocks
 (
     const profile& lower,
     const profile& upper,
-    const extent& b,
+    const nmm::boxExtent& b,
     const std::string& material
 )
 {
@@ -405,7 +377,7 @@ void addColumns
     const nmm::dictionary& d,
     const profile& lower,
     const profile& upper,
-    const extent& b
+    const nmm::boxExtent& b
 )
 {
     columnKeywords().validate(d);
@@ -439,7 +411,7 @@ int run(int argc, char* argv[])
     nmm::argList args("nmmRoughFracture",
         "Write two blocks split by a rough fracture from system/nmmRoughFractureDict");
     args.addKeywordHelp("system/nmmRoughFractureDict", keywords());
-    args.addKeywordHelp("system/nmmRoughFractureDict, 'box'", boxKeywords());
+    args.addKeywordHelp("system/nmmRoughFractureDict, 'box'", nmm::boxExtent::keywords());
     args.addKeywordHelp("system/nmmRoughFractureDict, 'lower' and 'upper'", profileKeywords());
     args.addKeywordHelp("system/nmmRoughFractureDict, 'columns'", columnKeywords());
     if (args.parse(argc, argv) == nmm::argList::parseResult::done) return 0;
@@ -451,7 +423,7 @@ int run(int argc, char* argv[])
     const nmm::dictionary dict =
         nmm::dictionary::read(casePath / "system" / "nmmRoughFractureDict", ro);
     keywords().validate(dict);
-    const extent b = readBox(dict);
+    const nmm::boxExtent b = nmm::boxExtent::read(dict.subDict("box"));
     const double meanHeight = keywords().get<double>(dict, "meanHeight");
 
     profile lower = readProfile(dict.subDict("lower"), b.x0, b.x1, nullptr);

@@ -58,6 +58,7 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "nmmGeometryTools/blockList/blockList.H"
+#include "nmmGeometryTools/boxExtent/boxExtent.H"
 #include "nmmGeometryTools/blockPreview/blockPreview.H"
 #include "nmmSolid/global/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
@@ -131,37 +132,9 @@ const nmm::keywordTable& keywords()
 }
 
 
-const nmm::keywordTable& boxKeywords()
-{
-    static const nmm::keywordTable table = []
-    {
-        nmm::keywordTable t("box", "axis-aligned box");
-        t.vector("min", "lower left corner (x y)", "m").required();
-        t.vector("max", "upper right corner (x y)", "m").required();
-        return t;
-    }();
-    return table;
-}
-
-
-struct box2
-{
-    double x0, y0, x1, y1;
-
-    double area() const { return (x1 - x0)*(y1 - y0); }
-    std::string text() const
-    {
-        std::ostringstream os;
-        os << std::setprecision(std::numeric_limits<double>::max_digits10)
-           << '(' << x0 << ' ' << y0 << ")-(" << x1 << ' ' << y1 << ')';
-        return os.str();
-    }
-};
-
-
 struct settings
 {
-    box2 box;
+    nmm::boxExtent box;
     std::size_t nGrains;
     double meanSize;            // equivalent-circle diameter [m]
     std::uint64_t seed;
@@ -169,20 +142,6 @@ struct settings
     double mergeTolerance;
     std::string material, namePrefix, output;
 };
-
-
-box2 readBox(const nmm::dictionary& dict)
-{
-    boxKeywords().validate(dict);
-    const auto lo = dict.get<std::array<double, 2>>("min");
-    const auto hi = dict.get<std::array<double, 2>>("max");
-    if (!(hi[0] > lo[0] && hi[1] > lo[1]))
-    {
-        throw dict.lookupEntry("max").error("box: 'max' must exceed 'min' in "
-            "both x and y (the box has no area)");
-    }
-    return {lo[0], lo[1], hi[0], hi[1]};
-}
 
 
 //- nGrains and meanGrainSize: exactly one is given, the other follows
@@ -225,7 +184,7 @@ settings readSettings(const nmm::dictionary& dict)
 {
     keywords().validate(dict);
     settings s;
-    s.box = readBox(dict.subDict("box"));
+    s.box = nmm::boxExtent::read(dict.subDict("box"));
     readGrainCount(dict, s);
     s.seed = std::uint64_t(keywords().get<long long>(dict, "seed"));
     s.lloydIterations = int(keywords().get<long long>(dict, "lloydIterations"));
@@ -250,7 +209,7 @@ double uniform(std::mt19937_64& rng)
 std::vector<vector2> drawSeeds(const settings& s)
 {
     std::mt19937_64 rng(s.seed);
-    const box2& b = s.box;
+    const nmm::boxExtent& b = s.box;
     std::vector<vector2> seeds;
     seeds.reserve(s.nGrains);
     while (seeds.size() < s.nGrains)
@@ -300,7 +259,7 @@ vector2 rounded(const point& p)
 }
 
 
-polygon boxPolygon(const box2& b)
+polygon boxPolygon(const nmm::boxExtent& b)
 {
     const std::vector<point> corners
     {
@@ -318,7 +277,7 @@ std::vector<delaunay::Vertex_handle> triangulate
 (
     delaunay& dt,
     const std::vector<vector2>& seeds,
-    const box2& b
+    const nmm::boxExtent& b
 )
 {
     const double cx = (b.x0 + b.x1)/2, cy = (b.y0 + b.y1)/2;
@@ -365,7 +324,7 @@ polygon voronoiCell(const delaunay& dt, delaunay::Vertex_handle v)
 }
 
 
-polygon clipToBox(const polygon& cell, const polygon& boxPoly, const box2& b)
+polygon clipToBox(const polygon& cell, const polygon& boxPoly, const nmm::boxExtent& b)
 {
     const kernel::Iso_rectangle_2 rect(b.x0, b.y0, b.x1, b.y1);
     const bool inside = std::none_of(cell.vertices_begin(), cell.vertices_end(),
@@ -385,7 +344,7 @@ polygon clipToBox(const polygon& cell, const polygon& boxPoly, const box2& b)
 
 
 //- The seeds' Voronoi cells clipped to the box, exact, in seed order
-std::vector<polygon> clippedCells(const std::vector<vector2>& seeds, const box2& b)
+std::vector<polygon> clippedCells(const std::vector<vector2>& seeds, const nmm::boxExtent& b)
 {
     delaunay dt;
     const auto vertices = triangulate(dt, seeds, b);
@@ -456,7 +415,7 @@ struct tessellation
 };
 
 
-unsigned sidesOf(const point& p, const box2& b)
+unsigned sidesOf(const point& p, const nmm::boxExtent& b)
 {
     using FT = kernel::FT;
     return (p.x() == FT(b.x0) ? onLeft : 0u) | (p.x() == FT(b.x1) ? onRight : 0u)
@@ -466,7 +425,7 @@ unsigned sidesOf(const point& p, const box2& b)
 
 //- Index the distinct exact vertices and round each once, so that every
 //  grain holding a vertex holds the same double
-tessellation shareVertices(const std::vector<polygon>& cells, const box2& b)
+tessellation shareVertices(const std::vector<polygon>& cells, const nmm::boxExtent& b)
 {
     const auto less = [](const point& p, const point& q)
     {
@@ -578,7 +537,7 @@ std::size_t mergeShortEdges(tessellation& t, double tol)
 
 
 //- Points merged across a corner take the box's coordinates
-void snapToBox(tessellation& t, const box2& b)
+void snapToBox(tessellation& t, const nmm::boxExtent& b)
 {
     for (std::size_t i = 0; i < t.points.size(); ++i)
     {
@@ -635,7 +594,7 @@ void row(const std::string& name, const T& value)
 }
 
 
-void reportAreas(const nmm::blockList& blocks, const box2& b)
+void reportAreas(const nmm::blockList& blocks, const nmm::boxExtent& b)
 {
     std::vector<double> areas;
     for (const auto& s : blocks.shapes()) areas.push_back(nmm::loopArea(s.outer));
@@ -668,7 +627,7 @@ int run(int argc, char* argv[])
     nmm::argList args("nmmVoronoiGrains",
         "Voronoi grains of random seeds in a box, as blocks for nmmMeshDict");
     args.addKeywordHelp("system/nmmVoronoiGrainsDict", keywords());
-    args.addKeywordHelp("system/nmmVoronoiGrainsDict, 'box'", boxKeywords());
+    args.addKeywordHelp("system/nmmVoronoiGrainsDict, 'box'", nmm::boxExtent::keywords());
     args.setDocumentation
     (
         "Reads system/nmmVoronoiGrainsDict, draws nGrains seeds uniformly in "
