@@ -24,48 +24,19 @@ matplotlib and VTK, which Debian installs for that interpreter only).
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 
-import json
-import os
-import shutil
-import subprocess
 import sys
-from pathlib import Path
+
+import paperTutorial
 
 
 def main(argv):
-    if len(argv) != 3:
-        print(__doc__)
+    case = paperTutorial.runReduced(argv, "marbleFailure", ["load*MPa*"], __doc__)
+    if case is None:
         return 1
-    binDir, project, work = Path(argv[0]), Path(argv[1]), Path(argv[2])
-    case = work/"marbleFailure"
-    if case.exists():
-        shutil.rmtree(case)
-    case.parent.mkdir(parents=True, exist_ok=True)
-    shutil.copytree(project/"tutorials/paper/marbleFailure", case,
-                    ignore=shutil.ignore_patterns("load*MPa*", "summary.md"))
-    env = dict(os.environ, NMM_PROJECT_DIR=str(project),
-               PATH=str(binDir) + os.pathsep + os.environ.get("PATH", ""))
-    subprocess.run(["bash", "./Allrun", "-reduced"], cwd=case, env=env, check=False)
-
-    failures = []
-    for run in ("load11MPaStrength", "load11MPaNoStrength"):
-        log = case/run/"log.nmmSolidFoam"
-        if not log.exists() or "\nEnd" not in log.read_text():
-            failures.append("%s did not end: see %s" % (run, log))
-    if failures:
-        print("\n".join("FAIL: " + f for f in failures))
+    check = paperTutorial.checks()
+    if not check.ended(case, ("load11MPaStrength", "load11MPaNoStrength")):
         return 1
-
-    out = subprocess.run([sys.executable, str(case/"summary.py"), "-json"],
-                         capture_output=True, text=True, check=True).stdout
-    rows = {r["run"]: r for r in json.loads(out)}
-    for r in rows.values():
-        print(json.dumps(r))
-
-    def check(ok, what):
-        print(("ok:   " if ok else "FAIL: ") + what)
-        if not ok:
-            failures.append(what)
+    rows = paperTutorial.summary(case)
 
     s, n = rows["load11MPaStrength"], rows["load11MPaNoStrength"]
     check(s["bondsBroken"] < 0.05*s["closedEnd"],
@@ -81,7 +52,7 @@ def main(argv):
     check(0.9*elastic < -s["topDy_um"] < 1.1*elastic,
           "11 MPa with strength: top shortening %.3f um against %.3f um elastic"
           % (-s["topDy_um"], elastic))
-    return 1 if failures else 0
+    return check.exitCode()
 
 
 if __name__ == "__main__":

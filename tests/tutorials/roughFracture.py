@@ -26,52 +26,21 @@ matplotlib and VTK, which Debian installs for that interpreter only).
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 
-import json
 import math
-import os
-import shutil
-import subprocess
 import sys
-from pathlib import Path
+
+import paperTutorial
 
 
 def main(argv):
-    if len(argv) != 3:
-        print(__doc__)
+    case = paperTutorial.runReduced(argv, "roughFracture", ["*Case[0-9]"], __doc__)
+    if case is None:
         return 1
-    binDir, project, work = Path(argv[0]), Path(argv[1]), Path(argv[2])
-    case = work/"roughFracture"
-    if case.exists():
-        shutil.rmtree(case)
-    case.parent.mkdir(parents=True, exist_ok=True)
-    shutil.copytree(project/"tutorials/paper/roughFracture", case,
-                    ignore=shutil.ignore_patterns("*Case[0-9]", "summary.md"))
-    env = dict(os.environ, NMM_PROJECT_DIR=str(project),
-               PATH=str(binDir) + os.pathsep + os.environ.get("PATH", ""))
-    subprocess.run(["bash", "./Allrun", "-reduced"], cwd=case, env=env, check=False)
-
-    failures = []
+    check = paperTutorial.checks()
     runs = [s + "Case" + str(n) for s in ("unconfined", "confined") for n in (1, 2, 3)]
-    for run in runs:
-        log = case/run/"log.nmmSolidFoam"
-        if not log.exists() or "\nEnd" not in log.read_text():
-            failures.append("%s did not end: see %s" % (run, log))
-    if failures:
-        print("\n".join("FAIL: " + f for f in failures))
+    if not check.ended(case, runs):
         return 1
-
-    out = subprocess.run([sys.executable, str(case/"summary.py"), "-json"],
-                         capture_output=True, text=True, check=True).stdout
-    rows = {r["run"]: r for r in json.loads(out)}
-    for r in rows.values():
-        print("%(run)s: first touch %(firstContactX_mm).2f mm, aperture "
-              "%(meanAperture_mm).3f mm, closure %(meanClosure_mm).3f mm, "
-              "offset %(offset_mm)+.3f mm" % r)
-
-    def check(ok, what):
-        print(("ok:   " if ok else "FAIL: ") + what)
-        if not ok:
-            failures.append(what)
+    rows = paperTutorial.summary(case)
 
     for r in rows.values():
         values = [v for v in r.values() if isinstance(v, float)]
@@ -89,7 +58,7 @@ def main(argv):
         check(abs(c["offset_mm"]) < 0.05, c["run"] + ": the columns stop the sliding")
     check(rows["confinedCase2"]["meanClosure_mm"] < u2["meanClosure_mm"],
           "confined case 2 closes less than unconfined case 2")
-    return 1 if failures else 0
+    return check.exitCode()
 
 
 if __name__ == "__main__":
