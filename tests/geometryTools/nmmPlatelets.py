@@ -24,14 +24,14 @@ SPDX-License-Identifier: GPL-3.0-or-later
 """
 
 import math
-import re
-import shutil
-import subprocess
 import sys
 import time
 from pathlib import Path
 
 import numpy as np
+
+import utilityCase
+from utilityCase import check, run
 
 BOX = (0.0, 0.0, 1e-5, 1e-5)
 BASE = {
@@ -46,49 +46,17 @@ BASE = {
     "material": "clay",
 }
 
-failures = []
-
-
-def check(ok, what):
-    print(("ok    " if ok else "FAIL  ") + what)
-    if not ok:
-        failures.append(what)
-
-
 def makeCase(work, name, entries):
-    case = work/name
-    if case.exists():
-        shutil.rmtree(case)
-    (case/"system").mkdir(parents=True)
-    text = "".join("%s %s;\n" % (k, v) if not v.startswith("{") else "%s %s\n" % (k, v)
-                   for k, v in entries.items())
-    (case/"system/nmmPlateletsDict").write_text(text)
-    return case
-
-
-def run(binDir, app, case, timeout=60):
-    return subprocess.run([str(binDir/app), "-case", str(case)],
-                          capture_output=True, text=True, timeout=timeout)
+    return utilityCase.makeCase(work, name, entries, "nmmPlateletsDict")
 
 
 def readBlocks(path):
     """[(name, material, array of points)] of a written block list"""
-    blocks = []
-    item = re.compile(r"^(\S+) \{ material (\S+); polygon \((.*)\); \}$")
-    for line in path.read_text().splitlines():
-        if not line or line.startswith("//"):
-            continue
-        m = item.match(line)
-        if not m:
-            raise ValueError("unexpected line: " + line)
-        pts = re.findall(r"\(([^()\s]+) ([^()\s]+)\)", m.group(3))
-        blocks.append((m.group(1), m.group(2), np.array(pts, dtype=float)))
-    return blocks
+    return [(n, m, np.array(p, dtype=float)) for n, m, p in utilityCase.blockList(path)]
 
 
 def area(p):
-    q = np.roll(p, -1, axis=0)
-    return 0.5*math.fsum(p[:, 0]*q[:, 1] - q[:, 0]*p[:, 1])
+    return utilityCase.polygonArea(p)
 
 
 def pointSegmentDistances(v, p):
@@ -265,16 +233,10 @@ def main(argv):
          ["Unknown keyword 'minGapp'", "did you mean 'minGap'"]),
         ("shape", dict(BASE, shape="elipse"), ["elipse", "did you mean 'ellipse'"]),
     ]
-    for name, entries, words in broken:
-        r = run(binDir, "nmmPlatelets", makeCase(work, name, entries))
-        missing = [w for w in words if w not in r.stderr]
-        check(r.returncode == 1 and not missing,
-              "%s: exit %d, message names %s" % (name, r.returncode, ", ".join(words)))
-        if missing:
-            print(r.stderr)
+    utilityCase.checkRejected(binDir, "nmmPlatelets", [(name, makeCase(work, name, entries), words)
+                                             for name, entries, words in broken])
 
-    print("\n%s" % ("FAILED: %d checks" % len(failures) if failures else "All checks passed"))
-    return 1 if failures else 0
+    return utilityCase.report()
 
 
 if __name__ == "__main__":

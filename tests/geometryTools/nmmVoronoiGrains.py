@@ -24,11 +24,11 @@ SPDX-License-Identifier: GPL-3.0-or-later
 """
 
 import math
-import re
-import shutil
-import subprocess
 import sys
 from pathlib import Path
+
+import utilityCase
+from utilityCase import check, run
 
 BOX = (0.0, 0.0, 0.01, 0.005)
 BASE = {
@@ -39,49 +39,12 @@ BASE = {
     "material": "rock",
 }
 
-failures = []
-
-
-def check(ok, what):
-    print(("ok    " if ok else "FAIL  ") + what)
-    if not ok:
-        failures.append(what)
-
-
 def makeCase(work, name, entries):
-    case = work/name
-    if case.exists():
-        shutil.rmtree(case)
-    (case/"system").mkdir(parents=True)
-    text = "".join("%s %s;\n" % (k, v) if not v.startswith("{") else "%s %s\n" % (k, v)
-                   for k, v in entries.items())
-    (case/"system/nmmVoronoiGrainsDict").write_text(text)
-    return case
+    return utilityCase.makeCase(work, name, entries, "nmmVoronoiGrainsDict")
 
 
-def run(binDir, app, case):
-    return subprocess.run([str(binDir/app), "-case", str(case)],
-                          capture_output=True, text=True, timeout=60)
-
-
-def readGrains(path):
-    """[(name, material, [(xText, yText), ...])] of a written block list"""
-    grains = []
-    item = re.compile(r"^(\S+) \{ material (\S+); polygon \((.*)\); \}$")
-    for line in path.read_text().splitlines():
-        if not line or line.startswith("//"):
-            continue
-        m = item.match(line)
-        if not m:
-            raise ValueError("unexpected line: " + line)
-        pts = re.findall(r"\(([^()\s]+) ([^()\s]+)\)", m.group(3))
-        grains.append((m.group(1), m.group(2), pts))
-    return grains
-
-
-def area(pts):
-    xy = [(float(x), float(y)) for x, y in pts]
-    return 0.5*math.fsum(p[0]*q[1] - q[0]*p[1] for p, q in zip(xy, xy[1:] + xy[:1]))
+readGrains = utilityCase.blockList
+area = utilityCase.polygonArea
 
 
 def coefficientOfVariation(values):
@@ -189,16 +152,10 @@ def main(argv):
          ["Unknown keyword 'lloydIteration'", "did you mean 'lloydIterations'"]),
         ("tooLarge", dict(neither, meanGrainSize="0.02"), ["meanGrainSize", "larger than the box"]),
     ]
-    for name, entries, words in broken:
-        r = run(binDir, "nmmVoronoiGrains", makeCase(work, name, entries))
-        missing = [w for w in words if w not in r.stderr]
-        check(r.returncode == 1 and not missing,
-              "%s: exit %d, message names %s" % (name, r.returncode, ", ".join(words)))
-        if missing:
-            print(r.stderr)
+    utilityCase.checkRejected(binDir, "nmmVoronoiGrains", [(name, makeCase(work, name, entries), words)
+                                             for name, entries, words in broken])
 
-    print("\n%s" % ("FAILED: %d checks" % len(failures) if failures else "All checks passed"))
-    return 1 if failures else 0
+    return utilityCase.report()
 
 
 if __name__ == "__main__":
