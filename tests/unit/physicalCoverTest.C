@@ -189,3 +189,35 @@ TEST(physicalCover, sliverPatchesExtendLinearFieldsExactly)
         EXPECT_NEAR(value, u(c.cover->nodes()[c.pc->patches()[p].node]), 1e-13);
     }
 }
+
+
+TEST(physicalCover, edgeAnUlpOffACoverDiagonalLeavesAPositiveSliver)
+{
+    // The hypotenuse runs along a cover diagonal but for the rounding of
+    // 0.013 and 0.0021*k: the piece between them is a sliver whose width
+    // is that rounding, which its loop's doubles cannot hold
+    const coverCase c(R"(
+        blocks
+        (
+            b { material rock; polygon ((0 0) (0.001 0) (0.001 0.001) (0 0.001)); }
+            t { material rock; polygon ((0.014 0.0070000000000000001)
+                (0.013000000000000001 0.0070000000000000001)
+                (0.013000000000000001 0.0060000000000000001)); }
+        );
+        cover { type structured; cellSize 0.0021; }
+    )");
+    double smallest = 1;
+    for (const auto& e : c.pc->elements())
+    {
+        smallest = std::min(smallest, e.areaRatio);
+        EXPECT_GT(e.areaRatio, 0);
+        EXPECT_LE(e.areaRatio, 1);
+        EXPECT_GT(e.moments.area, 0);
+        const auto T = physicalCover::triangleOf(*c.cover, e);
+        EXPECT_TRUE(nmm::manifoldElement::centroid(T, e.moments).allFinite());
+    }
+    // The case has the sliver it is about
+    EXPECT_LT(smallest, 1e-20);
+    const double area = c.geometry.area();
+    EXPECT_NEAR(c.elementArea(), area, 1e-14*area);
+}

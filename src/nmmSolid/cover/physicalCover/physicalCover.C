@@ -150,6 +150,28 @@ manifoldElement::polygonMoments elementMoments
 }
 
 
+//- A sliver whose width is a rounding of its coordinates (a block edge
+//  an ulp off a cover edge) has no area left in the doubles of its loop:
+//  its exact area is lumped at the mean of its vertices, which is exact
+//  to that rounding, and keeps its centroid finite
+manifoldElement::polygonMoments sliverMoments
+(
+    const manifoldElement::triangleNodes& T,
+    const manifoldElement::baryLoop& outer,
+    double areaRatio
+)
+{
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (const auto& p : outer) mean += p;
+    mean /= double(outer.size());
+    manifoldElement::polygonMoments m;
+    m.area = areaRatio*std::abs(manifoldElement::signedArea(T));
+    m.w = m.area*mean;
+    m.ww = m.area*mean*mean.transpose();
+    return m;
+}
+
+
 //- Stretches of each element along the cover edges, kept while patches
 //  are found
 using stretchList = std::vector<cutPiece::edgeStretch>;
@@ -359,7 +381,8 @@ void physicalCover::addElement
     e.block = piece.block;
     e.loops = std::move(piece.loops);
     e.moments = elementMoments(T, e.loops);
-    e.areaRatio = manifoldElement::areaRatio(T, e.moments);
+    e.areaRatio = piece.areaRatio;
+    if (!(e.moments.area > 0)) e.moments = sliverMoments(T, e.loops[0], e.areaRatio);
     for (const auto& f : piece.faces)
     {
         const cutSegment& s = table.segments[f.segment];

@@ -265,6 +265,22 @@ bool addLoop(const cutContext& c, Circulator first, cutPiece& piece)
 }
 
 
+//- Twice the signed area enclosed by a CCB (slits cancel)
+template<class Circulator>
+K::FT twiceArea(Circulator first)
+{
+    K::FT a = 0;
+    auto h = first;
+    do
+    {
+        const K::Point_2& p = h->source()->point();
+        const K::Point_2& q = h->target()->point();
+        a += p.x()*q.y() - q.x()*p.y();
+    } while (++h != first);
+    return a;
+}
+
+
 } // End anonymous namespace
 
 
@@ -297,10 +313,13 @@ std::vector<cutPiece> cutTriangle
         cutPiece piece;
         piece.block = owner;
         if (!addLoop(c, f->outer_ccb(), piece)) continue;
+        K::FT area2 = twiceArea(f->outer_ccb());
         for (auto ic = f->inner_ccbs_begin(); ic != f->inner_ccbs_end(); ++ic)
         {
             addLoop(c, *ic, piece);
+            area2 += twiceArea(*ic);
         }
+        piece.areaRatio = CGAL::to_double(area2/CGAL::abs(c.area2));
         pieces.push_back(std::move(piece));
     }
     return pieces;
