@@ -92,10 +92,14 @@ TEST(physicalCover, cutPolygonWithHoleKeepsItsArea)
     )");
     const double area = c.geometry.area();
     EXPECT_NEAR(c.elementArea(), area, 1e-14*area);
-    // Each element's moments integrate w to its area
+    // Each element's moments integrate w to its area, and its area ratio
+    // (from the exact cut) is the moments' to rounding, never above 1
     for (const auto& e : c.pc->elements())
     {
         EXPECT_NEAR(e.moments.w.sum(), e.moments.area, 1e-15);
+        const auto T = physicalCover::triangleOf(*c.cover, e);
+        EXPECT_NEAR(e.areaRatio, nmm::manifoldElement::areaRatio(T, e.moments), 1e-13);
+        EXPECT_LE(e.areaRatio, 1.0);
     }
     double perimeter = 0;
     for (const auto& b : c.geometry.blocks())

@@ -319,7 +319,9 @@ std::vector<cutPiece> cutTriangle
             addLoop(c, *ic, piece);
             area2 += twiceArea(*ic);
         }
-        piece.areaRatio = CGAL::to_double(area2/CGAL::abs(c.area2));
+        // The lazy number's own double is its interval's, as much as 1e-12
+        // off: the exact value, rounded once, keeps a whole triangle at 1
+        piece.areaRatio = CGAL::to_double(CGAL::exact(area2/CGAL::abs(c.area2)));
         pieces.push_back(std::move(piece));
     }
     return pieces;
