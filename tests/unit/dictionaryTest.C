@@ -664,3 +664,39 @@ TEST(dictionary, fuzzFindings)
         EXPECT_EQ(os1.str(), os2.str()) << text;
     }
 }
+
+
+TEST(dictionary, unexpandedDirectivesAreWrittenBackAsTheyWere)
+{
+    // What nmmDictionary -set reads and rewrites: directives stay, with no
+    // ';' after them, also as the last thing of a sub-dictionary
+    const std::string text = R"D(
+        a 1;
+        s { b 2; #include "fileA" }
+        #inputMode merge
+        #remove (x y)
+        #remove z
+        #default c 3;
+        #includeEtc "caseDicts/setConstraintTypes"
+    )D";
+    nmm::readOptions keep;
+    keep.expand = false;
+    const dictionary d1 = dictionary::parse(text, "<string>", keep);
+    std::ostringstream os1;
+    d1.write(os1);
+    const std::string out = os1.str();
+    for (const char* line : {"#include        \"fileA\"\n", "#inputMode      merge\n",
+                             "#remove         (x y)\n", "#remove         z\n", "#default\n",
+                             "#includeEtc     \"caseDicts/setConstraintTypes\"\n"})
+    {
+        EXPECT_NE(out.find(line), std::string::npos) << line << " not in\n" << out;
+    }
+    EXPECT_EQ(out.find("\";"), std::string::npos) << out;
+    const dictionary d2 = dictionary::parse(out, "<string>", keep);
+    std::ostringstream os2;
+    d2.write(os2);
+    EXPECT_EQ(out, os2.str());
+    EXPECT_EQ(d2.get<int>("c"), 3);
+    EXPECT_EQ(d2.subDict("s").get<int>("b"), 2);
+    EXPECT_THROW(dictionary::parse("s { #include }", "<string>", keep), nmm::IOerror);
+}

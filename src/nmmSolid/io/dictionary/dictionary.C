@@ -359,6 +359,17 @@ const dictionary& dictionary::subOrEmptyDict(const std::string& key) const
 }
 
 
+entry* dictionary::append(std::unique_ptr<entry> e)
+{
+    if (e->isDict()) e->dict().parent_ = this;
+    entry* stored = e.get();
+    entries_.push_back(std::move(e));
+    index_[stored->keyword()] = stored;
+    if (stored->isPattern()) patterns_.push_back(stored);
+    return stored;
+}
+
+
 entry* dictionary::add(std::unique_ptr<entry> e, bool merge)
 {
     auto it = index_.find(e->keyword());
@@ -517,7 +528,7 @@ void writeEntry(std::ostream& os, const entry& e, int indent)
         os << std::string(k.size() < 15 ? 16 - k.size() : 1, ' ');
         writeTokens(os, e.stream());
     }
-    os << ";\n";
+    os << (dictionaryParser::isBareDirective(k) ? "\n" : ";\n");
 }
 
 } // End anonymous namespace

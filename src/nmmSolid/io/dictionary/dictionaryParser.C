@@ -186,6 +186,12 @@ void dictionaryParser::parseEntries
 
         if (!opts_.expand)
         {
+            if (t.isDirective() && isBareDirective(t.text))
+            {
+                d.append(std::make_unique<entry>(t.str(), directiveArguments(lx, t),
+                    t.where));
+                continue;
+            }
             if (t.isDirective() || t.isVariable())
             {
                 // Keep the directive and its arguments as a primitive entry
@@ -846,6 +852,43 @@ void dictionaryParser::directive(dictionaryLexer& lx, dictionary& d, const token
     const std::string hint = didYouMean(name, directiveNames());
     if (!hint.empty()) msg += "; " + hint;
     throw IOerror(msg, dir.where, name);
+}
+
+
+bool dictionaryParser::isBareDirective(const std::string& name)
+{
+    return isIncludeDirective(name) || name == "#includeFunc" || name == "#inputMode"
+        || name == "#remove" || name == "#default" || name == "#overwrite"
+        || name == "#warn" || name == "#error" || name == "#merge";
+}
+
+
+tokenList dictionaryParser::directiveArguments(dictionaryLexer& lx, const token& dir)
+{
+    tokenList args;
+    const std::string& name = dir.text;
+    if (name == "#default" || name == "#overwrite" || name == "#warn"
+     || name == "#error" || name == "#merge")
+    {
+        return args;
+    }
+    token t;
+    if (!lx.next(t) || t.isPunct(';') || t.isPunct('}'))
+    {
+        throw IOerror(name + " needs an argument", dir.where, name);
+    }
+    args.push_back(t);
+    // #remove takes a keyword or a list of them
+    if (name == "#remove" && t.isPunct('('))
+    {
+        while (lx.next(t))
+        {
+            args.push_back(t);
+            if (t.isPunct(')')) return args;
+        }
+        throw IOerror("#remove: the list is never closed", dir.where, name);
+    }
+    return args;
 }
 
 
