@@ -8,6 +8,7 @@
 #include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
 #include "nmmSolid/output/solidOutput/solidOutput.H"
 
+#include "modelCase.H"
 #include "testTools.H"
 
 #include <gtest/gtest.h>
@@ -23,51 +24,11 @@
 namespace nm = nmm;
 using nmm::nmmSolidModel;
 using nmm::test::tempDir;
+using testCase = nmm::test::modelCase;
+using nmm::test::header;
 
 namespace
 {
-
-const char* header = "FoamFile { version 2.0; format ascii; class dictionary; object x; }\n";
-
-//- A case folder from the texts of its files
-struct testCase
-{
-    tempDir dir;
-
-    testCase
-    (
-        const std::string& blocks,
-        const std::string& patches,
-        const std::string& cover,
-        const std::string& solution,
-        const std::string& boundaryField,
-        const std::string& gravity = {}
-    )
-    {
-        dir.write("system/controlDict", std::string(header) + "endTime 1; deltaT 1;\n");
-        dir.write("system/nmmMeshDict", std::string(header) + "blocks (" + blocks
-            + ");\npatches {" + patches + "}\ncover {" + cover + "}\n");
-        dir.write("system/nmmSolution", std::string(header) + solution);
-        dir.write("constant/mechanicalProperties", std::string(header)
-            + "planeStress no; thickness 1;\n"
-              "materials { rock { type linearElastic; E 1000; nu 0.3; rho 2000; } }\n");
-        dir.write("constant/contactProperties", std::string(header)
-            + "default { law mohrCoulomb; frictionAngle 30; }\n");
-        dir.write("0/D", std::string(header) + "dimensions [0 1 0 0 0 0 0];\n"
-            "internalField uniform (0 0 0);\nboundaryField {" + boundaryField + "}\n");
-        if (!gravity.empty())
-        {
-            dir.write("constant/g", std::string(header)
-                + "dimensions [0 1 -2 0 0 0 0]; value " + gravity + ";\n");
-        }
-    }
-
-    std::unique_ptr<nmmSolidModel> model() const
-    {
-        return nmmSolidModel::New(nm::caseFolder(dir.path));
-    }
-};
-
 
 //- Largest error of the patch displacements against u(x) at the nodes,
 //  over the largest |u|

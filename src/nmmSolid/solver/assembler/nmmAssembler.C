@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 namespace nmm
 {
@@ -321,6 +322,7 @@ void nmmAssembler::addSegments
 ) const
 {
     const auto gamma = nitscheParameters(patchD);
+    addCouplingPressure(patchD, f);
     for (std::size_t i = 0; i < rules_.size(); ++i)
     {
         const boundaryRule* rule = rules_[i];
@@ -351,16 +353,56 @@ void nmmAssembler::addTraction
     Eigen::VectorXd& f
 ) const
 {
+    addLoad(seg, length, [&](const Eigen::Vector2d& X)
+    {
+        return Eigen::Vector2d(rule.vectorValue(X, t1) - rule.scalarValue(X, t1)*normal);
+    }, f);
+}
+
+
+void nmmAssembler::addLoad
+(
+    const physicalCover::boundarySegment& seg,
+    double length,
+    const std::function<Eigen::Vector2d(const Eigen::Vector2d&)>& tr,
+    Eigen::VectorXd& f
+) const
+{
     const auto T0 = referenceTriangle(seg.element);
     vector6 fs = vector6::Zero();
     for (int qp = 0; qp < 3; ++qp)
     {
         const baryPoint lambda = (1 - gaussPoints[qp])*seg.p + gaussPoints[qp]*seg.q;
         const Eigen::Vector2d X = manifoldElement::toCartesian(T0, lambda);
-        const Eigen::Vector2d tr = rule.vectorValue(X, t1) - rule.scalarValue(X, t1)*normal;
-        fs += gaussWeights[qp]*length*thickness_*weightMatrix(lambda).transpose()*tr;
+        fs += gaussWeights[qp]*length*thickness_*weightMatrix(lambda).transpose()*tr(X);
     }
     scatter(seg.element, fs, f);
+}
+
+
+void nmmAssembler::addCouplingPressure(const Eigen::Matrix2Xd& patchD, Eigen::VectorXd& f) const
+{
+    for (std::size_t i = 0; i < couplingPressure_.size(); ++i)
+    {
+        const double p = couplingPressure_[i];
+        if (p == 0) continue;
+        const auto& seg = pc_.segments()[i];
+        const auto g = currentSegment(currentTriangle(seg.element, patchD), seg);
+        if (g.length == 0) continue;
+        const Eigen::Vector2d tr = -p*g.normal;
+        addLoad(seg, g.length, [&](const Eigen::Vector2d&) { return tr; }, f);
+    }
+}
+
+
+void nmmAssembler::setCouplingPressure(std::vector<double> p)
+{
+    if (!p.empty() && p.size() != pc_.segments().size())
+    {
+        throw std::invalid_argument("setCouplingPressure: " + std::to_string(p.size())
+            + " values for " + std::to_string(pc_.segments().size()) + " boundary segments");
+    }
+    couplingPressure_ = std::move(p);
 }
 
 
@@ -426,6 +468,7 @@ Eigen::VectorXd nmmAssembler::externalForces(const solidState& s, double t) cons
     Eigen::VectorXd f = Eigen::VectorXd::Zero(Eigen::Index(nUnknowns()));
     addBodyForce(f);
     const auto patchD = patchDisplacements(s.D);
+    addCouplingPressure(patchD, f);
     for (std::size_t i = 0; i < rules_.size(); ++i)
     {
         const boundaryRule* rule = rules_[i];

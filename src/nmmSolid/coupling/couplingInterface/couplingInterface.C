@@ -1,0 +1,196 @@
+#include "nmmSolid/coupling/couplingInterface/couplingInterface.H"
+
+#include "nmmSolid/io/dictionary/IOerror.H"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace nmm
+{
+
+namespace
+{
+
+//- Position of a segment of the boundary on the faces of a patch
+template<class Key>
+long indexIn(const std::vector<Key>& sorted, const Key& k)
+{
+    const auto it = std::lower_bound(sorted.begin(), sorted.end(), k);
+    return it != sorted.end() && *it == k ? long(it - sorted.begin()) : -1;
+}
+
+
+//- The segment's end points, displaced by patchD (zero: reference)
+std::pair<Eigen::Vector2d, Eigen::Vector2d> segmentEnds
+(
+    const nmmSolidModel& m,
+    const physicalCover::boundarySegment& s,
+    const Eigen::Matrix2Xd& patchD
+)
+{
+    const auto& e = m.elements().elements()[s.element];
+    manifoldElement::triangleNodes T = physicalCover::triangleOf(m.cover(), e);
+    for (int k = 0; k < 3; ++k) T.col(k) += patchD.col(e.patches[k]);
+    return {manifoldElement::toCartesian(T, s.p), manifoldElement::toCartesian(T, s.q)};
+}
+
+} // End anonymous namespace
+
+
+couplingInterface::couplingInterface(nmmSolidModel& model)
+:
+    model_(model)
+{
+    const auto& segments = model_.elements().segments();
+    for (const geometryPatch& p : model_.geometry().patches())
+    {
+        auto& faces = segments_[p.name];
+        faces.resize(p.edges.size() + p.jointFaces.size());
+        for (std::size_t i = 0; i < segments.size(); ++i)
+        {
+            const auto& s = segments[i];
+            const long f = s.kind == physicalCover::segmentKind::blockEdge
+                ? indexIn(p.edges, s.edge)
+                : (indexIn(p.jointFaces, s.face) < 0 ? -1
+                   : long(p.edges.size()) + indexIn(p.jointFaces, s.face));
+            if (f >= 0) faces[std::size_t(f)].push_back(i);
+        }
+    }
+}
+
+
+const std::vector<std::vector<std::size_t>>& couplingInterface::facesOf
+(
+    const std::string& region
+) const
+{
+    const auto it = segments_.find(region);
+    if (it != segments_.end()) return it->second;
+    std::string msg = "unknown coupling region '" + region + "'";
+    const std::string hint = didYouMean(region, regions());
+    if (!hint.empty()) msg += "; " + hint;
+    std::string valid;
+    for (const auto& r : regions()) valid += " " + r;
+    throw couplingError(msg + " (regions:" + valid + ")");
+}
+
+
+std::vector<std::string> couplingInterface::regions() const
+{
+    std::vector<std::string> names;
+    for (const geometryPatch& p : model_.geometry().patches()) names.push_back(p.name);
+    return names;
+}
+
+
+std::vector<couplingInterface::face> couplingInterface::faces(const std::string& region) const
+{
+    const auto& segments = model_.elements().segments();
+    const Eigen::Matrix2Xd patchD = model_.patchDisplacements();
+    std::vector<face> result;
+    for (const auto& pieces : facesOf(region))
+    {
+        face f;
+        Eigen::Vector2d normal = Eigen::Vector2d::Zero();
+        for (const std::size_t i : pieces)
+        {
+            const auto& s = segments[i];
+            const auto [a, b] = segmentEnds(model_, s, patchD);
+            const double l = (b - a).norm();
+            f.midpoint += 0.5*l*(a + b);
+            // Material on the left from p to q: the outward normal is on the right
+            normal += Eigen::Vector2d(b.y() - a.y(), a.x() - b.x());
+            f.length += l;
+            f.block = model_.elements().elements()[s.element].block;
+        }
+        if (f.length > 0) f.midpoint /= f.length;
+        if (normal.norm() > 0) f.normal = normal.normalized();
+        result.push_back(f);
+    }
+    return result;
+}
+
+
+void couplingInterface::checkValues(const std::string& region, const std::vector<double>& v) const
+{
+    const std::size_t n = facesOf(region).size();
+    if (v.size() != n)
+    {
+        throw couplingError("region '" + region + "' has " + std::to_string(n)
+            + " faces; " + std::to_string(v.size()) + " values were given");
+    }
+    for (std::size_t i = 0; i < v.size(); ++i)
+    {
+        if (!std::isfinite(v[i]))
+        {
+            throw couplingError("region '" + region + "': the value of face "
+                + std::to_string(i) + " is not finite");
+        }
+    }
+}
+
+
+void couplingInterface::setPressure(const std::string& region, const std::vector<double>& p)
+{
+    checkValues(region, p);
+    pressure_[region] = p;
+    std::vector<double> perSegment(model_.elements().segments().size(), 0.0);
+    for (const auto& [name, values] : pressure_)
+    {
+        const auto& faces = segments_.at(name);
+        for (std::size_t f = 0; f < faces.size(); ++f)
+        {
+            for (const std::size_t i : faces[f]) perSegment[i] += values[f];
+        }
+    }
+    model_.setCouplingPressure(std::move(perSegment));
+}
+
+
+std::vector<Eigen::Vector2d> couplingInterface::displacement(const std::string& region) const
+{
+    const auto& segments = model_.elements().segments();
+    const Eigen::Matrix2Xd patchD = model_.patchDisplacements();
+    const Eigen::Matrix2Xd none = Eigen::Matrix2Xd::Zero(2, patchD.cols());
+    std::vector<Eigen::Vector2d> result;
+    for (const auto& pieces : facesOf(region))
+    {
+        Eigen::Vector2d integral = Eigen::Vector2d::Zero();
+        double length = 0;
+        for (const std::size_t i : pieces)
+        {
+            const auto [a0, b0] = segmentEnds(model_, segments[i], none);
+            const auto [a, b] = segmentEnds(model_, segments[i], patchD);
+            // Linear along the piece: the mean is the value at its middle
+            const double l0 = (b0 - a0).norm();
+            integral += 0.5*l0*((a - a0) + (b - b0));
+            length += l0;
+        }
+        result.push_back(length > 0 ? Eigen::Vector2d(integral/length) : integral);
+    }
+    return result;
+}
+
+
+double couplingInterface::maxDeltaT() const
+{
+    if (!model_.scheme().dynamic() || !model_.controls())
+    {
+        return std::numeric_limits<double>::infinity();
+    }
+    return model_.controls()->stepControl().maxDeltaT;
+}
+
+
+void couplingInterface::setDeltaT(double dt)
+{
+    if (!(dt > 0) || !std::isfinite(dt))
+    {
+        throw couplingError("setDeltaT: the step must be positive and finite, got "
+            + std::to_string(dt));
+    }
+    deltaT_ = dt;
+}
+
+} // End namespace nmm

@@ -1,0 +1,210 @@
+// Unit tests of the coupling interface: a pressure set through it loads a
+// patch as 0/D's pressure does (against the closed form of a uniaxial
+// column), a restored step repeats exactly, the faces' geometry, and
+// wrong input is an error that changes nothing.
+#include "nmmSolid/coupling/couplingInterface/couplingInterface.H"
+
+#include "modelCase.H"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using nmm::couplingError;
+using nmm::couplingInterface;
+using nmm::test::modelCase;
+
+namespace
+{
+
+//- A 1 x 2 column on rollers (bottom and left), its top loaded by the
+//  pressure of 0/D, p0
+std::unique_ptr<modelCase> column(double p0)
+{
+    return std::make_unique<modelCase>
+    (
+        "a { material rock; polygon ((0 0) (1 0) (1 2) (0 2)); }",
+        "bottom { type box; min (-1 -1); max (2 1e-9); }"
+        "left { type box; min (-1 -1); max (1e-9 3); }"
+        "top { type box; min (-1 1.999999); max (2 3); }"
+        "right { type box; min (0.999999 -1); max (2 3); }",
+        "type structured; cellSize 0.3;",
+        "analysis static; largeDisplacement no;\n",
+        "\"(bottom|left)\" { type fixedNormal; }"
+        "right { type tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }"
+        "top { type tractionDisplacement; traction uniform (0 0 0); pressure uniform "
+            + std::to_string(p0) + "; }"
+    );
+}
+
+} // End anonymous namespace
+
+
+TEST(couplingInterface, pressureLoadsAPatchAsThePressureOf0DDoes)
+{
+    const double p = 10, E = 1000, nu = 0.3, H = 2;
+    const auto direct = column(p);
+    auto m0 = direct->model();
+    m0->solveStep(1);
+    m0->acceptStep();
+    const couplingInterface c0(*m0);
+
+    const auto coupled = column(0);
+    auto m1 = coupled->model();
+    couplingInterface c1(*m1);
+    ASSERT_EQ(c1.faces("top").size(), 1u);
+    c1.setPressure("top", {p});
+    c1.setDeltaT(1);
+    ASSERT_TRUE(c1.solveStep().converged);
+    c1.acceptStep();
+
+    // Uniaxial stress in plane strain: the top goes down p (1 - nu^2) H/E,
+    // the right side out p nu (1 + nu)/E times its width
+    const double dy = -p*(1 - nu*nu)*H/E, dx = p*nu*(1 + nu)/E;
+    const auto top = c1.displacement("top"), right = c1.displacement("right");
+    EXPECT_NEAR(top[0].y(), dy, 1e-12*std::abs(dy));
+    EXPECT_NEAR(right[0].x(), dx, 1e-12*dx);
+    EXPECT_LT((top[0] - c0.displacement("top")[0]).norm(), 1e-14);
+}
+
+
+TEST(couplingInterface, facesAreWhereThePatchIsNow)
+{
+    const auto c = column(0);
+    auto m = c->model();
+    couplingInterface ci(*m);
+    const auto regions = ci.regions();
+    EXPECT_EQ(regions.size(), 4u);
+    const auto top = ci.faces("top");
+    ASSERT_EQ(top.size(), 1u);
+    EXPECT_NEAR(top[0].length, 1, 1e-14);
+    EXPECT_LT((top[0].midpoint - Eigen::Vector2d(0.5, 2)).norm(), 1e-14);
+    EXPECT_LT((top[0].normal - Eigen::Vector2d(0, 1)).norm(), 1e-14);
+    EXPECT_EQ(top[0].block, 0u);
+
+    ci.setPressure("top", {10});
+    ci.setDeltaT(1);
+    ci.solveStep();
+    ci.acceptStep();
+    const auto moved = ci.faces("top");
+    const double dy = -10*(1 - 0.09)*2/1000.0;
+    EXPECT_NEAR(moved[0].midpoint.y(), 2 + dy, 1e-12);
+    EXPECT_GT(moved[0].length, 1);   // the column bulges sideways
+}
+
+
+TEST(couplingInterface, aRestoredStepIsRepeatedExactly)
+{
+    const auto c = column(0);
+    auto m = c->model();
+    couplingInterface ci(*m);
+    ci.setDeltaT(1);
+    const auto start = ci.saveState();
+
+    ci.setPressure("top", {10});
+    ci.solveStep();
+    ci.acceptStep();
+    const auto first = ci.displacement("top")[0];
+
+    // The coupled solver iterates: other pressure, then back
+    ci.restoreState(start);
+    ci.setPressure("top", {20});
+    ci.solveStep();
+    ci.acceptStep();
+    EXPECT_NEAR(ci.displacement("top")[0].y(), 2*first.y(), 1e-12*std::abs(first.y()));
+
+    ci.restoreState(start);
+    ci.setPressure("top", {10});
+    ci.solveStep();
+    ci.acceptStep();
+    EXPECT_EQ(ci.displacement("top")[0], first);
+    EXPECT_EQ(ci.time(), 1);
+}
+
+
+TEST(couplingInterface, wrongInputIsAnErrorThatChangesNothing)
+{
+    const auto c = column(0);
+    auto m = c->model();
+    couplingInterface ci(*m);
+    const auto message = [&](auto call)
+    {
+        try { call(); }
+        catch (const couplingError& e) { return std::string(e.what()); }
+        return std::string("no error");
+    };
+    EXPECT_NE(message([&] { ci.setPressure("tpo", {1}); }).find("did you mean 'top'"),
+              std::string::npos);
+    EXPECT_NE(message([&] { ci.displacement("bottm"); }).find("unknown coupling region 'bottm'"),
+              std::string::npos);
+    EXPECT_NE(message([&] { ci.setPressure("top", {1, 2}); }).find("has 1 faces; 2 values"),
+              std::string::npos);
+    EXPECT_NE(message([&] { ci.setPressure("top", {std::nan("")}); }).find("not finite"),
+              std::string::npos);
+    EXPECT_NE(message([&] { ci.setDeltaT(-1); }).find("positive"), std::string::npos);
+    EXPECT_NE(message([&] { ci.setDeltaT(std::numeric_limits<double>::infinity()); })
+              .find("positive"), std::string::npos);
+
+    // None of it loaded the column
+    ci.setDeltaT(1);
+    ci.solveStep();
+    ci.acceptStep();
+    EXPECT_EQ(ci.displacement("top")[0].norm(), 0);
+}
+
+
+TEST(couplingInterface, pressureOnCrackFacesOpensTheCrackAsThePressureOf0DDoes)
+{
+    // A crack in a plate: the patch of its joint has two faces, one on
+    // each side, facing each other
+    const auto plate = [](double p0)
+    {
+        auto c = std::make_unique<modelCase>
+        (
+            "plate { material rock; polygon ((-1 -1) (1 -1) (1 1) (-1 1)); }",
+            "crack { type joint; joint crack1; }"
+            "bottom { type box; min (-2 -1.000001); max (2 -0.999999); }",
+            "type structured; cellSize 0.05;",
+            "analysis static; largeDisplacement no;\n",
+            "crack { type tractionDisplacement; traction uniform (0 0 0); pressure uniform "
+                + std::to_string(p0) + "; }"
+            "bottom { type fixedValue; value uniform (0 0 0); }"
+        );
+        const std::string mesh = std::string(nmm::test::header)
+            + "blocks ( plate { material rock; polygon ((-1 -1) (1 -1) (1 1) (-1 1)); } );\n"
+              "joints ( crack1 { points ((-0.2 0.013) (0.2 0.013)); } );\n"
+              "patches { crack { type joint; joint crack1; }"
+              " bottom { type box; min (-2 -1.000001); max (2 -0.999999); } }\n"
+              "cover { type structured; cellSize 0.05; }\n";
+        c->dir.write("system/nmmMeshDict", mesh);
+        return c;
+    };
+    const auto direct = plate(1);
+    auto m0 = direct->model();
+    m0->solveStep(1);
+    m0->acceptStep();
+    const couplingInterface c0(*m0);
+
+    const auto coupled = plate(0);
+    auto m1 = coupled->model();
+    couplingInterface c1(*m1);
+    const auto faces = c1.faces("crack");
+    ASSERT_EQ(faces.size(), 2u);
+    EXPECT_NEAR(faces[0].length, 0.4, 1e-14);
+    EXPECT_LT((faces[0].normal + faces[1].normal).norm(), 1e-14);
+    EXPECT_NEAR(std::abs(faces[0].normal.y()), 1, 1e-14);
+    c1.setPressure("crack", {1, 1});
+    c1.setDeltaT(1);
+    c1.solveStep();
+    c1.acceptStep();
+
+    const auto d0 = c0.displacement("crack"), d1 = c1.displacement("crack");
+    // The faces move apart, along their normals
+    const double opening = (d1[1] - d1[0]).dot(faces[1].normal);
+    EXPECT_LT(opening, 0);
+    for (std::size_t f = 0; f < 2; ++f)
+    {
+        EXPECT_LT((d1[f] - d0[f]).norm(), 1e-12*std::abs(opening));
+    }
+}
