@@ -373,15 +373,7 @@ entry* dictionary::append(std::unique_ptr<entry> e)
 entry* dictionary::add(std::unique_ptr<entry> e, bool merge)
 {
     auto it = index_.find(e->keyword());
-    if (it == index_.end())
-    {
-        if (e->isDict()) e->dict().parent_ = this;
-        entry* stored = e.get();
-        entries_.push_back(std::move(e));
-        index_[stored->keyword()] = stored;
-        if (stored->isPattern()) patterns_.push_back(stored);
-        return stored;
-    }
+    if (it == index_.end()) return append(std::move(e));
 
     entry* existing = it->second;
     const std::string key = e->keyword();
