@@ -208,3 +208,123 @@ TEST(couplingInterface, pressureOnCrackFacesOpensTheCrackAsThePressureOf0DDoes)
         EXPECT_LT((d1[f] - d0[f]).norm(), 1e-12*std::abs(opening));
     }
 }
+
+
+namespace
+{
+
+//- A 1 x 2 block of rock with alpha 1e-5 and Tref 300, on rollers at
+//  the bottom and the left; 'confined' puts the top and the right on
+//  rollers too
+std::unique_ptr<modelCase> thermalBlock(bool confined)
+{
+    const std::string free =
+        "\"(top|right)\" { type tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }";
+    auto c = std::make_unique<modelCase>
+    (
+        "a { material rock; polygon ((0 0) (1 0) (1 2) (0 2)); }",
+        "bottom { type box; min (-1 -1); max (2 1e-9); }"
+        "left { type box; min (-1 -1); max (1e-9 3); }"
+        "top { type box; min (-1 1.999999); max (2 3); }"
+        "right { type box; min (0.999999 -1); max (2 3); }",
+        "type structured; cellSize 0.3;",
+        "analysis static; largeDisplacement no;\n",
+        confined ? "\".*\" { type fixedNormal; }"
+                 : "\"(bottom|left)\" { type fixedNormal; }" + free
+    );
+    c->dir.write("constant/mechanicalProperties", std::string(nmm::test::header)
+        + "planeStress no; thickness 1;\n"
+          "materials { rock { type linearElastic; E 1000; nu 0.3; rho 2000;"
+          " alpha 1e-5; Tref 300; } }\n");
+    return c;
+}
+
+} // End anonymous namespace
+
+
+TEST(couplingInterface, aFreeBlockExpandsByItsThermalStrainWithoutStress)
+{
+    const auto c = thermalBlock(false);
+    auto m = c->model();
+    couplingInterface ci(*m);
+    ASSERT_EQ(ci.blocks(), std::vector<std::string>{"a"});
+    ci.setTemperature({350});
+    ci.setDeltaT(1);
+    ASSERT_TRUE(ci.solveStep().converged);
+    ci.acceptStep();
+
+    // Plane strain holds the zz strain, so the plane takes (1 + nu) alpha dT
+    // and sigma_zz = -E alpha dT carries the rest
+    const double alpha = 1e-5, dT = 50, nu = 0.3, E = 1000;
+    const double eps = (1 + nu)*alpha*dT;
+    EXPECT_NEAR(ci.displacement("right")[0].x(), eps*1, 1e-12*eps);
+    EXPECT_NEAR(ci.displacement("top")[0].y(), eps*2, 1e-12*eps);
+    for (const auto& s : m->state().sigma)
+    {
+        EXPECT_LT(s.head<3>().norm(), 1e-12*E*alpha*dT);
+        EXPECT_NEAR(s[3], -E*alpha*dT, 1e-12*E*alpha*dT);
+    }
+
+    // Back to Tref: back to the start
+    ci.setTemperature({300});
+    ci.solveStep();
+    ci.acceptStep();
+    EXPECT_LT(ci.displacement("top")[0].norm(), 1e-15);
+}
+
+
+TEST(couplingInterface, aConfinedBlockReachesTheThermalStress)
+{
+    const auto c = thermalBlock(true);
+    auto m = c->model();
+    couplingInterface ci(*m);
+    const auto start = ci.saveState();
+    ci.setTemperature({400});
+    ci.setDeltaT(1);
+    ci.solveStep();
+    ci.acceptStep();
+
+    // No strain in any direction: sigma = -E alpha dT/(1 - 2 nu) in all three
+    const double sigma = -1000*1e-5*100/(1 - 2*0.3);
+    for (const auto& s : m->state().sigma)
+    {
+        EXPECT_NEAR(s[0], sigma, 1e-12*std::abs(sigma));
+        EXPECT_NEAR(s[1], sigma, 1e-12*std::abs(sigma));
+        EXPECT_NEAR(s[2], 0, 1e-12*std::abs(sigma));
+        EXPECT_NEAR(s[3], sigma, 1e-12*std::abs(sigma));
+    }
+
+    // A restored step starts from the restored temperature
+    const auto first = m->state().sigma;
+    ci.restoreState(start);
+    ci.solveStep();
+    ci.acceptStep();
+    EXPECT_EQ(m->state().sigma, first);
+}
+
+
+TEST(couplingInterface, aTemperatureNeedsAlphaAndSensibleValues)
+{
+    const auto noAlpha = column(0);
+    auto m = noAlpha->model();
+    couplingInterface ci(*m);
+    const auto message = [&](auto call)
+    {
+        try { call(); }
+        catch (const couplingError& e) { return std::string(e.what()); }
+        return std::string("no error");
+    };
+    EXPECT_NE(message([&] { ci.setTemperature({350}); }).find("has no alpha and Tref"),
+              std::string::npos);
+    EXPECT_NE(message([&] { ci.setTemperature({350, 360}); }).find("has 1 blocks; 2 values"),
+              std::string::npos);
+    EXPECT_NE(message([&] { ci.setTemperature({-1}); }).find("finite and positive"),
+              std::string::npos);
+    EXPECT_NE(message([&] { ci.setTemperature({std::nan("")}); }).find("finite and positive"),
+              std::string::npos);
+    // None of it strained the column
+    ci.setDeltaT(1);
+    ci.solveStep();
+    ci.acceptStep();
+    EXPECT_EQ(ci.displacement("top")[0].norm(), 0);
+}

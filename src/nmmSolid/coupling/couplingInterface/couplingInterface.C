@@ -1,5 +1,6 @@
 #include "nmmSolid/coupling/couplingInterface/couplingInterface.H"
 
+#include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/dictionary/IOerror.H"
 
 #include <algorithm>
@@ -145,6 +146,41 @@ void couplingInterface::setPressure(const std::string& region, const std::vector
         }
     }
     model_.setCouplingPressure(std::move(perSegment));
+}
+
+
+std::vector<std::string> couplingInterface::blocks() const
+{
+    std::vector<std::string> names;
+    for (const auto& b : model_.geometry().blocks()) names.push_back(b.name());
+    return names;
+}
+
+
+void couplingInterface::setTemperature(const std::vector<double>& perBlock)
+{
+    const std::size_t n = model_.geometry().blocks().size();
+    if (perBlock.size() != n)
+    {
+        throw couplingError("temperature: the model has " + std::to_string(n)
+            + " blocks; " + std::to_string(perBlock.size()) + " values were given");
+    }
+    for (std::size_t b = 0; b < n; ++b)
+    {
+        if (!(std::isfinite(perBlock[b]) && perBlock[b] > 0))
+        {
+            throw couplingError("temperature of block '" + blocks()[b]
+                + "' must be finite and positive [K], got " + std::to_string(perBlock[b]));
+        }
+    }
+    try
+    {
+        model_.setTemperature(perBlock);
+    }
+    catch (const fatalError& e)
+    {
+        throw couplingError(e.what());
+    }
 }
 
 

@@ -56,6 +56,15 @@ std::vector<nmmAssembler::elementMaterial> nmmSolidModel::elementMaterials() con
         em.zzFactor = props.planeStress() ? 0 : em.D(0, 1)/(em.D(0, 0) + em.D(0, 1));
         em.lambdaMax = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(em.D)
             .eigenvalues().maxCoeff();
+        const solidMaterial& mat = props.material(m);
+        if (mat.hasThermalExpansion())
+        {
+            // Plane strain holds the zz strain: (3 lambda + 2 mu)/(2 lambda
+            // + 2 mu) = 1 + nu times alpha in the plane, from D's entries
+            em.thermalStrain = props.planeStress() ? mat.alpha()
+                : mat.alpha()*(em.D(0, 0) + 2*em.D(0, 1))/(em.D(0, 0) + em.D(0, 1));
+            em.zzThermal = props.planeStress() ? 0 : -mat.stiffnessModulus()*mat.alpha();
+        }
     }
     std::vector<nmmAssembler::elementMaterial> perElement;
     for (const auto& e : parts_.elements->elements())
@@ -157,6 +166,7 @@ stepReport nmmSolidModel::solveStep(double dt)
     }
 
     const cpuTime clock;
+    assembler_->setTemperatureIncrement(elementTemperatureIncrement());
     const auto sys = assembler_->assemble(state_, dt, parts_.scheme);
     timing_["assembly"] += clock.elapsed();
 
@@ -421,6 +431,7 @@ void nmmSolidModel::updateTrial(const Eigen::VectorXd& dd, double dt)
     const auto dPatch = assembler_->patchDisplacements(dd);
     std::vector<double> rotations;
     updateStresses(patchD0, dPatch, rotations);
+    if (!temperature_.empty()) trial_.temperature = temperature_;
     updateMotion(dd, dt);
     if (parts_.largeDisplacement) correctRotations(patchD0, rotations);
     if (contacts_) trial_.contacts = contacts_->records();
@@ -438,6 +449,7 @@ void nmmSolidModel::updateStresses
 {
     const auto& els = parts_.elements->elements();
     rotations.assign(els.size(), 0.0);
+    const std::vector<double> dTemperature = elementTemperatureIncrement();
     for (std::size_t e = 0; e < els.size(); ++e)
     {
         const auto T = assembler_->currentTriangle(label(e), patchD0);
@@ -452,9 +464,10 @@ void nmmSolidModel::updateStresses
         const auto& m = assembler_->material(label(e));
         Eigen::Vector4d& s = trial_.sigma[e];
         if (parts_.largeDisplacement) s = rotated(s, rotation(w));
-        const Eigen::Vector3d ds = m.D*(B*de);
+        const double dT = dTemperature.empty() ? 0.0 : dTemperature[e];
+        const Eigen::Vector3d ds = m.D*(B*de - assembler_->thermalStrain(label(e), dT));
         s.head<3>() += ds;
-        s[3] += m.zzFactor*(ds[0] + ds[1]);
+        s[3] += m.zzFactor*(ds[0] + ds[1]) + m.zzThermal*dT;
     }
 }
 
@@ -529,6 +542,50 @@ void nmmSolidModel::acceptStep()
     last_.cuts = cuts_;
     cuts_ = 0;
     failedLoads_.resize(0);
+}
+
+
+void nmmSolidModel::setTemperature(std::vector<double> perBlock)
+{
+    const auto& blocks = parts_.geometry->blocks();
+    if (!perBlock.empty() && perBlock.size() != blocks.size())
+    {
+        throw fatalError("setTemperature: " + std::to_string(perBlock.size())
+            + " values for " + std::to_string(blocks.size()) + " blocks");
+    }
+    for (std::size_t b = 0; b < blocks.size() && !perBlock.empty(); ++b)
+    {
+        const auto& props = *parts_.properties;
+        if (!props.material(materialOfBlock_[b]).hasThermalExpansion())
+        {
+            throw fatalError("block '" + blocks[b].name() + "': its material '"
+                + props.names()[materialOfBlock_[b]] + "' has no alpha and Tref in"
+                " constant/mechanicalProperties, so a temperature cannot strain it"
+                " (give alpha 0 for a material that does not expand)");
+        }
+    }
+    temperature_ = std::move(perBlock);
+}
+
+
+std::vector<double> nmmSolidModel::elementTemperatureIncrement() const
+{
+    if (temperature_.empty()) return {};
+    // A state no temperature was set in is at each material's Tref, where
+    // the thermal strain is zero
+    const auto start = [&](std::size_t b)
+    {
+        return state_.temperature.empty()
+            ? parts_.properties->material(materialOfBlock_[b]).Tref()
+            : state_.temperature[b];
+    };
+    std::vector<double> dT;
+    for (const auto& e : parts_.elements->elements())
+    {
+        const auto b = std::size_t(e.block);
+        dT.push_back(temperature_[b] - start(b));
+    }
+    return dT;
 }
 
 

@@ -265,9 +265,18 @@ void nmmAssembler::addElements
         const double area = currentArea(e, T);
         const matrix36 B = manifoldElement::strainMatrix(T);
         scatter(e, manifoldElement::stiffness(T, area, materials_[e].D, thickness_), K);
-        const vector6 fInt = area*thickness_*B.transpose()*s.sigma[e].head<3>();
+        const vector6 fInt = area*thickness_*B.transpose()*startStress(s, e);
         scatter(e, vector6(-fInt), f);
     }
+}
+
+
+Eigen::Vector3d nmmAssembler::startStress(const solidState& s, label e) const
+{
+    // A thermal strain in the step is a stress the element starts from
+    if (temperatureIncrement_.empty()) return s.sigma[e].head<3>();
+    return s.sigma[e].head<3>()
+        - materials_[e].D*thermalStrain(e, temperatureIncrement_[std::size_t(e)]);
 }
 
 
@@ -395,6 +404,17 @@ void nmmAssembler::addCouplingPressure(const Eigen::Matrix2Xd& patchD, Eigen::Ve
 }
 
 
+void nmmAssembler::setTemperatureIncrement(std::vector<double> dT)
+{
+    if (!dT.empty() && dT.size() != pc_.nElements())
+    {
+        throw std::invalid_argument("setTemperatureIncrement: " + std::to_string(dT.size())
+            + " values for " + std::to_string(pc_.nElements()) + " elements");
+    }
+    temperatureIncrement_ = std::move(dT);
+}
+
+
 void nmmAssembler::setCouplingPressure(std::vector<double> p)
 {
     if (!p.empty() && p.size() != pc_.segments().size())
@@ -429,7 +449,7 @@ void nmmAssembler::addNitsche
     const matrix23 Pn = tractionMatrix(normal);
     const matrix26 tractionOfD
         = Pn*materials_[fe].D*manifoldElement::strainMatrix(currentTriangle(fe, patchD));
-    const Eigen::Vector2d sigmaN = Pn*s.sigma[fe].head<3>();
+    const Eigen::Vector2d sigmaN = Pn*startStress(s, fe);
     const Eigen::VectorXd de = elementDisplacements(e, s.D);
 
     // Projection on what is prescribed: all of u, or its normal part
