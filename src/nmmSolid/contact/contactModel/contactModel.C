@@ -223,6 +223,8 @@ void contactModel::beginStep
         a.record.point = loops[c.vertexLoop].vertices[c.vertex].x;
         a.g = relativeTerms(c, a.n);
         a.h = relativeTerms(c, s);
+        const auto p = pressure_.find(a.record.key());
+        if (p != pressure_.end()) a.pressureForce = p->second*c.length*thickness_;
         active_.push_back(std::move(a));
     }
     carryHistory(history, start);
@@ -414,6 +416,18 @@ Eigen::VectorXd contactModel::forces(long nUnknowns) const
 }
 
 
+Eigen::VectorXd contactModel::pressureLoads(long nUnknowns) const
+{
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(nUnknowns);
+    for (const active& a : active_)
+    {
+        // Work of the pair of forces on the opening: F dgap, dgap = g dd
+        for (const auto& [dof, c] : a.g) f[dof] += a.pressureForce*c;
+    }
+    return f;
+}
+
+
 double contactModel::stepLength
 (
     const Eigen::VectorXd& dd,
@@ -525,6 +539,7 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
         q.Fn = -a.kN*r.gap;
         q.Fs = a.shearForce0 - a.kS*a.ds;
         q.length = r.length*thickness_;
+        q.pressureForce = a.pressureForce;
         // A slip within the touch tolerance is rounding: its sign must not
         // turn the friction of a contact at rest
         const bool slips = std::abs(a.ds) > settings_.touchTolerance;

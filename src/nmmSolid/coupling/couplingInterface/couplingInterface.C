@@ -81,12 +81,35 @@ std::vector<std::string> couplingInterface::regions() const
 {
     std::vector<std::string> names;
     for (const geometryPatch& p : model_.geometry().patches()) names.push_back(p.name);
+    if (model_.contacts()) names.push_back(fractures);
     return names;
+}
+
+
+bool couplingInterface::isFractures(const std::string& region) const
+{
+    return region == fractures && model_.contacts();
 }
 
 
 std::vector<couplingInterface::face> couplingInterface::faces(const std::string& region) const
 {
+    if (isFractures(region))
+    {
+        const auto& loops = model_.contacts()->boundaries().loops();
+        std::vector<face> result;
+        for (const contactRecord& r : contacts())
+        {
+            face f;
+            f.midpoint = r.point;
+            f.normal = r.normal;
+            f.length = r.length;
+            f.block = std::size_t(loops[std::size_t(r.edgeLoop)].block);
+            f.otherBlock = std::size_t(loops[std::size_t(r.vertexLoop)].block);
+            result.push_back(f);
+        }
+        return result;
+    }
     const auto& segments = model_.elements().segments();
     const Eigen::Matrix2Xd patchD = model_.patchDisplacements();
     std::vector<face> result;
@@ -115,7 +138,7 @@ std::vector<couplingInterface::face> couplingInterface::faces(const std::string&
 
 void couplingInterface::checkValues(const std::string& region, const std::vector<double>& v) const
 {
-    const std::size_t n = facesOf(region).size();
+    const std::size_t n = isFractures(region) ? contacts().size() : facesOf(region).size();
     if (v.size() != n)
     {
         throw couplingError("region '" + region + "' has " + std::to_string(n)
@@ -135,6 +158,13 @@ void couplingInterface::checkValues(const std::string& region, const std::vector
 void couplingInterface::setPressure(const std::string& region, const std::vector<double>& p)
 {
     checkValues(region, p);
+    if (isFractures(region))
+    {
+        std::map<std::tuple<int, int, int, int>, double> byContact;
+        for (std::size_t i = 0; i < p.size(); ++i) byContact[contacts()[i].key()] = p[i];
+        model_.setContactPressure(std::move(byContact));
+        return;
+    }
     pressure_[region] = p;
     std::vector<double> perSegment(model_.elements().segments().size(), 0.0);
     for (const auto& [name, values] : pressure_)
@@ -186,6 +216,11 @@ void couplingInterface::setTemperature(const std::vector<double>& perBlock)
 
 std::vector<Eigen::Vector2d> couplingInterface::displacement(const std::string& region) const
 {
+    if (isFractures(region))
+    {
+        throw couplingError("region 'fractures' has no displacement: its fields are"
+            " normalJump, aperture, slip and contactTraction");
+    }
     const auto& segments = model_.elements().segments();
     const Eigen::Matrix2Xd patchD = model_.patchDisplacements();
     const Eigen::Matrix2Xd none = Eigen::Matrix2Xd::Zero(2, patchD.cols());
@@ -206,6 +241,63 @@ std::vector<Eigen::Vector2d> couplingInterface::displacement(const std::string& 
         result.push_back(length > 0 ? Eigen::Vector2d(integral/length) : integral);
     }
     return result;
+}
+
+
+void couplingInterface::acceptStep()
+{
+    std::vector<std::tuple<int, int, int, int>> before;
+    for (const auto& r : contacts()) before.push_back(r.key());
+    model_.acceptStep();
+    bool changed = model_.lastStep().bondsBroken > 0 || before.size() != contacts().size();
+    for (std::size_t i = 0; i < before.size() && !changed; ++i)
+    {
+        changed = before[i] != contacts()[i].key();
+    }
+    if (changed) ++revision_;
+}
+
+
+std::vector<double> couplingInterface::normalJump() const
+{
+    std::vector<double> v;
+    for (const auto& r : contacts()) v.push_back(r.gap);
+    return v;
+}
+
+
+std::vector<double> couplingInterface::aperture(double residual) const
+{
+    if (!(residual >= 0) || !std::isfinite(residual))
+    {
+        throw couplingError("aperture: the residual aperture must be finite and not"
+            " negative, got " + std::to_string(residual));
+    }
+    std::vector<double> v;
+    for (const auto& r : contacts()) v.push_back(std::max(r.gap, residual));
+    return v;
+}
+
+
+std::vector<double> couplingInterface::slip() const
+{
+    std::vector<double> v;
+    for (const auto& r : contacts()) v.push_back(r.slip);
+    return v;
+}
+
+
+std::vector<Eigen::Vector2d> couplingInterface::contactTraction() const
+{
+    const double thickness = model_.properties().thickness();
+    std::vector<Eigen::Vector2d> v;
+    for (const auto& r : contacts())
+    {
+        const double area = r.length*thickness;
+        v.push_back(area > 0 ? Eigen::Vector2d(r.normalForce/area, r.shearForce/area)
+                             : Eigen::Vector2d::Zero());
+    }
+    return v;
 }
 
 

@@ -282,6 +282,7 @@ bool nmmSolidModel::solveWithContacts
         assembler_->patchDisplacements(state_.D), state_.contacts, state_.timeIndex == 0
     );
     timing_["contact detection"] += clock.elapsed();
+    const Eigen::VectorXd loads = sys.f + contacts_->pressureLoads(n);
     clock = cpuTime();
     const Eigen::SparseMatrix<double> pattern = contacts_->withPattern(sys.K);
     timing_["contact assembly"] += clock.elapsed();
@@ -299,7 +300,7 @@ bool nmmSolidModel::solveWithContacts
         clock = cpuTime();
         Eigen::SparseMatrix<double> K = pattern;
         contacts_->addSprings(K);
-        const Eigen::VectorXd f = sys.f + contacts_->forces(n);
+        const Eigen::VectorXd f = loads + contacts_->forces(n);
         timing_["contact assembly"] += clock.elapsed();
 
         const Eigen::VectorXd delta = solveSystem(K, f, dt) - dd;
@@ -311,7 +312,7 @@ bool nmmSolidModel::solveWithContacts
             const Eigen::VectorXd Kdelta = sys.K*delta;
             alpha = contacts_->stepLength
             (
-                dd, delta, delta.dot(Kdelta), Kdelta.dot(dd) - delta.dot(sys.f)
+                dd, delta, delta.dot(Kdelta), Kdelta.dot(dd) - delta.dot(loads)
             );
         }
         dd += alpha*delta;
