@@ -539,7 +539,9 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
         q.Fn = -a.kN*r.gap;
         q.Fs = a.shearForce0 - a.kS*a.ds;
         q.length = r.length*thickness_;
-        q.pressureForce = a.pressureForce;
+        // A coupled fluid's pressure is a load on the faces (pressureLoads),
+        // so the springs carry the rest, the effective normal force Fn - p L
+        // of the paper's Eq. 8, which the law compares with its strengths
         // A slip within the touch tolerance is rounding: its sign must not
         // turn the friction of a contact at rest
         const bool slips = std::abs(a.ds) > settings_.touchTolerance;

@@ -41,7 +41,8 @@ std::pair<Eigen::Vector2d, Eigen::Vector2d> segmentEnds
 
 couplingInterface::couplingInterface(nmmSolidModel& model)
 :
-    model_(model)
+    model_(model),
+    upcoming_(model.upcomingContacts())
 {
     const auto& segments = model_.elements().segments();
     for (const geometryPatch& p : model_.geometry().patches())
@@ -111,7 +112,7 @@ std::vector<couplingInterface::face> couplingInterface::faces(const std::string&
         return result;
     }
     const auto& segments = model_.elements().segments();
-    const Eigen::Matrix2Xd patchD = model_.patchDisplacements();
+    const Eigen::Matrix2Xd patchD = model_.assembler().patchDisplacements(model_.latestState().D);
     std::vector<face> result;
     for (const auto& pieces : facesOf(region))
     {
@@ -222,7 +223,7 @@ std::vector<Eigen::Vector2d> couplingInterface::displacement(const std::string& 
             " normalJump, aperture, slip and contactTraction");
     }
     const auto& segments = model_.elements().segments();
-    const Eigen::Matrix2Xd patchD = model_.patchDisplacements();
+    const Eigen::Matrix2Xd patchD = model_.assembler().patchDisplacements(model_.latestState().D);
     const Eigen::Matrix2Xd none = Eigen::Matrix2Xd::Zero(2, patchD.cols());
     std::vector<Eigen::Vector2d> result;
     for (const auto& pieces : facesOf(region))
@@ -246,22 +247,44 @@ std::vector<Eigen::Vector2d> couplingInterface::displacement(const std::string& 
 
 void couplingInterface::acceptStep()
 {
-    std::vector<std::tuple<int, int, int, int>> before;
-    for (const auto& r : contacts()) before.push_back(r.key());
     model_.acceptStep();
-    bool changed = model_.lastStep().bondsBroken > 0 || before.size() != contacts().size();
-    for (std::size_t i = 0; i < before.size() && !changed; ++i)
+    std::vector<contactRecord> next = model_.upcomingContacts();
+    bool changed = model_.lastStep().bondsBroken > 0 || next.size() != upcoming_.size();
+    for (std::size_t i = 0; i < next.size() && !changed; ++i)
     {
-        changed = before[i] != contacts()[i].key();
+        changed = next[i].key() != upcoming_[i].key();
     }
+    upcoming_ = std::move(next);
     if (changed) ++revision_;
+}
+
+
+void couplingInterface::restoreState(const solidState& s)
+{
+    model_.restoreState(s);
+    upcoming_ = model_.upcomingContacts();
+}
+
+
+std::vector<const contactRecord*> couplingInterface::latestContacts() const
+{
+    const auto& latest = model_.latestState().contacts;
+    std::map<std::tuple<int, int, int, int>, const contactRecord*> byKey;
+    for (const auto& r : latest) byKey[r.key()] = &r;
+    std::vector<const contactRecord*> result;
+    for (const auto& r : contacts())
+    {
+        const auto it = byKey.find(r.key());
+        result.push_back(it != byKey.end() ? it->second : &r);
+    }
+    return result;
 }
 
 
 std::vector<double> couplingInterface::normalJump() const
 {
     std::vector<double> v;
-    for (const auto& r : contacts()) v.push_back(r.gap);
+    for (const auto* r : latestContacts()) v.push_back(r->gap);
     return v;
 }
 
@@ -274,7 +297,7 @@ std::vector<double> couplingInterface::aperture(double residual) const
             " negative, got " + std::to_string(residual));
     }
     std::vector<double> v;
-    for (const auto& r : contacts()) v.push_back(std::max(r.gap, residual));
+    for (const auto* r : latestContacts()) v.push_back(std::max(r->gap, residual));
     return v;
 }
 
@@ -282,7 +305,7 @@ std::vector<double> couplingInterface::aperture(double residual) const
 std::vector<double> couplingInterface::slip() const
 {
     std::vector<double> v;
-    for (const auto& r : contacts()) v.push_back(r.slip);
+    for (const auto* r : latestContacts()) v.push_back(r->slip);
     return v;
 }
 
@@ -291,10 +314,10 @@ std::vector<Eigen::Vector2d> couplingInterface::contactTraction() const
 {
     const double thickness = model_.properties().thickness();
     std::vector<Eigen::Vector2d> v;
-    for (const auto& r : contacts())
+    for (const auto* r : latestContacts())
     {
-        const double area = r.length*thickness;
-        v.push_back(area > 0 ? Eigen::Vector2d(r.normalForce/area, r.shearForce/area)
+        const double area = r->length*thickness;
+        v.push_back(area > 0 ? Eigen::Vector2d(r->normalForce/area, r->shearForce/area)
                              : Eigen::Vector2d::Zero());
     }
     return v;

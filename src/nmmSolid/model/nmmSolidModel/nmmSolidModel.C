@@ -546,6 +546,18 @@ void nmmSolidModel::acceptStep()
 }
 
 
+std::vector<contactRecord> nmmSolidModel::upcomingContacts()
+{
+    if (!contacts_) return {};
+    // The same search solveStep() starts with, so the same contacts
+    contacts_->beginStep
+    (
+        assembler_->patchDisplacements(state_.D), state_.contacts, state_.timeIndex == 0
+    );
+    return contacts_->records();
+}
+
+
 void nmmSolidModel::setTemperature(std::vector<double> perBlock)
 {
     const auto& blocks = parts_.geometry->blocks();
