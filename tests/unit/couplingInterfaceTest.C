@@ -39,6 +39,15 @@ std::unique_ptr<modelCase> column(double p0)
     );
 }
 
+//- The message of the couplingError that call throws
+template<class Call>
+std::string message(Call call)
+{
+    try { call(); }
+    catch (const couplingError& e) { return e.what(); }
+    return "no error";
+}
+
 } // End anonymous namespace
 
 
@@ -129,12 +138,6 @@ TEST(couplingInterface, wrongInputIsAnErrorThatChangesNothing)
     const auto c = column(0);
     auto m = c->model();
     couplingInterface ci(*m);
-    const auto message = [&](auto call)
-    {
-        try { call(); }
-        catch (const couplingError& e) { return std::string(e.what()); }
-        return std::string("no error");
-    };
     EXPECT_NE(message([&] { ci.setPressure("tpo", {1}); }).find("did you mean 'top'"),
               std::string::npos);
     EXPECT_NE(message([&] { ci.displacement("bottm"); }).find("unknown coupling region 'bottm'"),
@@ -309,12 +312,6 @@ TEST(couplingInterface, aTemperatureNeedsAlphaAndSensibleValues)
     const auto noAlpha = column(0);
     auto m = noAlpha->model();
     couplingInterface ci(*m);
-    const auto message = [&](auto call)
-    {
-        try { call(); }
-        catch (const couplingError& e) { return std::string(e.what()); }
-        return std::string("no error");
-    };
     EXPECT_NE(message([&] { ci.setTemperature({350}); }).find("has no alpha and Tref"),
               std::string::npos);
     EXPECT_NE(message([&] { ci.setTemperature({350, 360}); }).find("has 1 blocks; 2 values"),
