@@ -268,10 +268,16 @@ void couplingInterface::restoreState(const solidState& s)
 
 std::vector<const contactRecord*> couplingInterface::latestContacts() const
 {
+    std::vector<const contactRecord*> result;
+    // Before a solve, the search's records
+    if (&model_.latestState() == &model_.state())
+    {
+        for (const auto& r : contacts()) result.push_back(&r);
+        return result;
+    }
     const auto& latest = model_.latestState().contacts;
     std::map<std::tuple<int, int, int, int>, const contactRecord*> byKey;
     for (const auto& r : latest) byKey[r.key()] = &r;
-    std::vector<const contactRecord*> result;
     for (const auto& r : contacts())
     {
         const auto it = byKey.find(r.key());
