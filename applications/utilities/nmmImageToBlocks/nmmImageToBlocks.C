@@ -69,7 +69,7 @@ Usage
 #include "pixelBoundaries.H"
 
 #include "nmmGeometryTools/blockList/blockList.H"
-#include "nmmGeometryTools/blockPreview/blockPreview.H"
+#include "nmmGeometryTools/geometryCase/geometryCase.H"
 #include "nmmSolid/global/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/dictionary/dictionary.H"
@@ -422,10 +422,7 @@ int run(int argc, char* argv[])
     args.printBanner(std::cout);
 
     const fs::path casePath = args.casePath();
-    nmm::readOptions ro;
-    ro.caseDir = casePath;
-    const nmm::dictionary dict =
-        nmm::dictionary::read(casePath / "system" / "nmmImageToBlocksDict", ro);
+    const nmm::dictionary dict = nmm::readUtilityDict(casePath, "nmmImageToBlocksDict");
     keywords().validate(dict);
     const settings s = readSettings(dict, casePath);
 
@@ -456,15 +453,13 @@ int run(int argc, char* argv[])
     }
     reportAreas(regions, blocks, s);
 
-    const fs::path file = casePath / "constant" / "geometry" / s.output;
-    blocks.write(file, "Written by nmmImageToBlocks from system/nmmImageToBlocksDict"
-        " and " + s.image.filename().string() + ": edit those, not this");
-    const fs::path preview = file.string() + ".png";
-    nmm::writeBlockPreview(preview, blocks);
+    const auto w = nmm::writeGeometry(casePath, s.output, blocks,
+        "Written by nmmImageToBlocks from system/nmmImageToBlocksDict and "
+        + s.image.filename().string() + ": edit those, not this");
     std::cout << "\nWriting\n"
-        << "    " << file.lexically_relative(casePath).string() << " (" << blocks.size()
+        << "    " << w.file.lexically_relative(casePath).string() << " (" << blocks.size()
         << " blocks, " << nWritten << " vertices)\n"
-        << "    " << preview.lexically_relative(casePath).string() << "\n\nEnd\n";
+        << "    " << w.preview.lexically_relative(casePath).string() << "\n\nEnd\n";
     return 0;
 }
 

@@ -67,7 +67,7 @@ Usage
 
 #include "nmmGeometryTools/blockList/blockList.H"
 #include "nmmGeometryTools/boxExtent/boxExtent.H"
-#include "nmmGeometryTools/blockPreview/blockPreview.H"
+#include "nmmGeometryTools/geometryCase/geometryCase.H"
 #include "nmmSolid/global/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/dictionary/dictionary.H"
@@ -510,12 +510,7 @@ int run(int argc, char* argv[])
     args.printBanner(std::cout);
 
     const fs::path casePath = args.casePath();
-    nmm::readOptions ro;
-    ro.caseDir = casePath;
-    const nmm::dictionary dict = nmm::dictionary::read
-    (
-        casePath/"system"/"nmmPlateletsDict", ro
-    );
+    const nmm::dictionary dict = nmm::readUtilityDict(casePath, "nmmPlateletsDict");
     const settings s = readSettings(dict);
 
     const placement result = place(s, dict);
@@ -533,12 +528,9 @@ int run(int argc, char* argv[])
     row("most for one platelet", std::to_string(result.mostAttempts)
         + " (maxAttempts " + std::to_string(s.maxAttempts) + ")");
 
-    const fs::path file = casePath/"constant"/"geometry"/s.output;
-    const fs::path png = file.string() + ".png";
-    blocks.write(file, fileComment(s));
-    nmm::writeBlockPreview(png, blocks);
-    std::cout << "\nWritten\n    " << file.lexically_relative(casePath).string()
-        << "\n    " << png.lexically_relative(casePath).string() << "\n\nEnd\n";
+    const auto w = nmm::writeGeometry(casePath, s.output, blocks, fileComment(s));
+    std::cout << "\nWritten\n    " << w.file.lexically_relative(casePath).string()
+        << "\n    " << w.preview.lexically_relative(casePath).string() << "\n\nEnd\n";
     return 0;
 }
 

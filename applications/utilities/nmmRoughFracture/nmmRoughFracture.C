@@ -39,7 +39,7 @@ Usage
 
 #include "nmmGeometryTools/blockList/blockList.H"
 #include "nmmGeometryTools/boxExtent/boxExtent.H"
-#include "nmmGeometryTools/blockPreview/blockPreview.H"
+#include "nmmGeometryTools/geometryCase/geometryCase.H"
 #include "nmmSolid/global/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/dictionary/dictionary.H"
@@ -418,10 +418,7 @@ int run(int argc, char* argv[])
     args.printBanner(std::cout);
 
     const fs::path casePath = args.casePath();
-    nmm::readOptions ro;
-    ro.caseDir = casePath;
-    const nmm::dictionary dict =
-        nmm::dictionary::read(casePath / "system" / "nmmRoughFractureDict", ro);
+    const nmm::dictionary dict = nmm::readUtilityDict(casePath, "nmmRoughFractureDict");
     keywords().validate(dict);
     const nmm::boxExtent b = nmm::boxExtent::read(dict.subDict("box"));
     const double meanHeight = keywords().get<double>(dict, "meanHeight");
@@ -448,10 +445,8 @@ int run(int argc, char* argv[])
         << " m, largest " << s.max << " m\n";
 
     const std::string output = keywords().get<std::string>(dict, "output");
-    const fs::path file = casePath / "constant" / "geometry" / output;
-    blocks.write(file, "Written by nmmRoughFracture from system/nmmRoughFractureDict:"
-        " edit that, not this");
-    writeBlockPreview(fs::path(file.string() + ".png"), blocks);
+    const fs::path file = nmm::writeGeometry(casePath, output, blocks,
+        "Written by nmmRoughFracture from system/nmmRoughFractureDict: edit that, not this").file;
     std::ofstream patches(file.string() + "Patches");
     patches << "// Written by nmmRoughFracture: the faces of the fracture\n"
         << facePatches(lower.size(), upper.size());

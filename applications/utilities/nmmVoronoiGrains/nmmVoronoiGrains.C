@@ -59,7 +59,7 @@ Usage
 
 #include "nmmGeometryTools/blockList/blockList.H"
 #include "nmmGeometryTools/boxExtent/boxExtent.H"
-#include "nmmGeometryTools/blockPreview/blockPreview.H"
+#include "nmmGeometryTools/geometryCase/geometryCase.H"
 #include "nmmSolid/global/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/dictionary/dictionary.H"
@@ -641,12 +641,7 @@ int run(int argc, char* argv[])
     args.printBanner(std::cout);
 
     const fs::path casePath = args.casePath();
-    nmm::readOptions ro;
-    ro.caseDir = casePath;
-    const nmm::dictionary dict = nmm::dictionary::read
-    (
-        casePath/"system"/"nmmVoronoiGrainsDict", ro
-    );
+    const nmm::dictionary dict = nmm::readUtilityDict(casePath, "nmmVoronoiGrainsDict");
     const settings s = readSettings(dict);
     std::cout << "Box " << s.box.text() << ", " << s.nGrains << " grains, mean "
         << "grain size (equivalent-circle diameter) " << s.meanSize << " m\n";
@@ -675,12 +670,9 @@ int run(int argc, char* argv[])
         << " of the mean grain size)";
     row("shortest edge", edge.str());
 
-    const fs::path file = casePath/"constant"/"geometry"/s.output;
-    const fs::path png = file.string() + ".png";
-    blocks.write(file, fileComment(s));
-    nmm::writeBlockPreview(png, blocks);
-    std::cout << "\nWritten\n    " << file.lexically_relative(casePath).string()
-        << "\n    " << png.lexically_relative(casePath).string() << "\n\nEnd\n";
+    const auto w = nmm::writeGeometry(casePath, s.output, blocks, fileComment(s));
+    std::cout << "\nWritten\n    " << w.file.lexically_relative(casePath).string()
+        << "\n    " << w.preview.lexically_relative(casePath).string() << "\n\nEnd\n";
     return 0;
 }
 
