@@ -39,6 +39,24 @@ std::unique_ptr<modelCase> column(double p0)
     );
 }
 
+//- Solve the step and accept it
+void stepOnce(couplingInterface& ci)
+{
+    ci.solveStep();
+    ci.acceptStep();
+}
+
+
+//- The model of a case after one step of length 1, loaded by 0/D only
+std::unique_ptr<nmm::nmmSolidModel> afterOneStep(const modelCase& c)
+{
+    auto m = c.model();
+    m->solveStep(1);
+    m->acceptStep();
+    return m;
+}
+
+
 //- The message of the couplingError that call throws
 template<class Call>
 std::string message(Call call)
@@ -55,9 +73,7 @@ TEST(couplingInterface, pressureLoadsAPatchAsThePressureOf0DDoes)
 {
     const double p = 10, E = 1000, nu = 0.3, H = 2;
     const auto direct = column(p);
-    auto m0 = direct->model();
-    m0->solveStep(1);
-    m0->acceptStep();
+    const auto m0 = afterOneStep(*direct);
     const couplingInterface c0(*m0);
 
     const auto coupled = column(0);
@@ -95,8 +111,7 @@ TEST(couplingInterface, facesAreWhereThePatchIsNow)
 
     ci.setPressure("top", {10});
     ci.setDeltaT(1);
-    ci.solveStep();
-    ci.acceptStep();
+    stepOnce(ci);
     const auto moved = ci.faces("top");
     const double dy = -10*(1 - 0.09)*2/1000.0;
     EXPECT_NEAR(moved[0].midpoint.y(), 2 + dy, 1e-12);
@@ -113,21 +128,18 @@ TEST(couplingInterface, aRestoredStepIsRepeatedExactly)
     const auto start = ci.saveState();
 
     ci.setPressure("top", {10});
-    ci.solveStep();
-    ci.acceptStep();
+    stepOnce(ci);
     const auto first = ci.displacement("top")[0];
 
     // The coupled solver iterates: other pressure, then back
     ci.restoreState(start);
     ci.setPressure("top", {20});
-    ci.solveStep();
-    ci.acceptStep();
+    stepOnce(ci);
     EXPECT_NEAR(ci.displacement("top")[0].y(), 2*first.y(), 1e-12*std::abs(first.y()));
 
     ci.restoreState(start);
     ci.setPressure("top", {10});
-    ci.solveStep();
-    ci.acceptStep();
+    stepOnce(ci);
     EXPECT_EQ(ci.displacement("top")[0], first);
     EXPECT_EQ(ci.time(), 1);
 }
@@ -152,8 +164,7 @@ TEST(couplingInterface, wrongInputIsAnErrorThatChangesNothing)
 
     // None of it loaded the column
     ci.setDeltaT(1);
-    ci.solveStep();
-    ci.acceptStep();
+    stepOnce(ci);
     EXPECT_EQ(ci.displacement("top")[0].norm(), 0);
 }
 
@@ -185,9 +196,7 @@ TEST(couplingInterface, pressureOnCrackFacesOpensTheCrackAsThePressureOf0DDoes)
         return c;
     };
     const auto direct = plate(1);
-    auto m0 = direct->model();
-    m0->solveStep(1);
-    m0->acceptStep();
+    const auto m0 = afterOneStep(*direct);
     const couplingInterface c0(*m0);
 
     const auto coupled = plate(0);
@@ -200,8 +209,7 @@ TEST(couplingInterface, pressureOnCrackFacesOpensTheCrackAsThePressureOf0DDoes)
     EXPECT_NEAR(std::abs(faces[0].normal.y()), 1, 1e-14);
     c1.setPressure("crack", {1, 1});
     c1.setDeltaT(1);
-    c1.solveStep();
-    c1.acceptStep();
+    stepOnce(c1);
 
     const auto d0 = c0.displacement("crack"), d1 = c1.displacement("crack");
     // The faces move apart, along their normals
@@ -271,8 +279,7 @@ TEST(couplingInterface, aFreeBlockExpandsByItsThermalStrainWithoutStress)
 
     // Back to Tref: back to the start
     ci.setTemperature({300});
-    ci.solveStep();
-    ci.acceptStep();
+    stepOnce(ci);
     EXPECT_LT(ci.displacement("top")[0].norm(), 1e-15);
 }
 
@@ -285,8 +292,7 @@ TEST(couplingInterface, aConfinedBlockReachesTheThermalStress)
     const auto start = ci.saveState();
     ci.setTemperature({400});
     ci.setDeltaT(1);
-    ci.solveStep();
-    ci.acceptStep();
+    stepOnce(ci);
 
     // No strain in any direction: sigma = -E alpha dT/(1 - 2 nu) in all three
     const double sigma = -1000*1e-5*100/(1 - 2*0.3);
@@ -301,8 +307,7 @@ TEST(couplingInterface, aConfinedBlockReachesTheThermalStress)
     // A restored step starts from the restored temperature
     const auto first = m->state().sigma;
     ci.restoreState(start);
-    ci.solveStep();
-    ci.acceptStep();
+    stepOnce(ci);
     EXPECT_EQ(m->state().sigma, first);
 }
 
@@ -322,8 +327,7 @@ TEST(couplingInterface, aTemperatureNeedsAlphaAndSensibleValues)
               std::string::npos);
     // None of it strained the column
     ci.setDeltaT(1);
-    ci.solveStep();
-    ci.acceptStep();
+    stepOnce(ci);
     EXPECT_EQ(ci.displacement("top")[0].norm(), 0);
 }
 
@@ -496,8 +500,7 @@ TEST(couplingInterface, hydroMechanicalFixedPointOnAClosedFracture)
     auto m = c.model();
     couplingInterface ci(*m);
     ci.setDeltaT(1);
-    ci.solveStep();
-    ci.acceptStep();
+    stepOnce(ci);
 
     // The coupled solver's grid samples the faces of the fracture
     const auto faces = ci.faces("fractures");
