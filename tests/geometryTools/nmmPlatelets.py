@@ -233,8 +233,7 @@ def main(argv):
          ["Unknown keyword 'minGapp'", "did you mean 'minGap'"]),
         ("shape", dict(BASE, shape="elipse"), ["elipse", "did you mean 'ellipse'"]),
     ]
-    utilityCase.checkRejected(binDir, "nmmPlatelets", [(name, makeCase(work, name, entries), words)
-                                             for name, entries, words in broken])
+    utilityCase.checkRejected(binDir, "nmmPlatelets", broken, makeCase, work)
 
     return utilityCase.report()
 

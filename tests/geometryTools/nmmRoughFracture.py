@@ -95,8 +95,7 @@ def main(argv):
         ("matedLower", dict(BASE, lower="{ type mated; shift 0; }"), ["mated", "upper"]),
         ("negativeAperture", dict(BASE, aperture="-1e-4"), ["aperture", "range"]),
     ]
-    utilityCase.checkRejected(binDir, "nmmRoughFracture", [(name, makeCase(work, name, entries), words)
-                                             for name, entries, words in broken])
+    utilityCase.checkRejected(binDir, "nmmRoughFracture", broken, makeCase, work)
 
     return utilityCase.report()
 

@@ -152,8 +152,7 @@ def main(argv):
          ["Unknown keyword 'lloydIteration'", "did you mean 'lloydIterations'"]),
         ("tooLarge", dict(neither, meanGrainSize="0.02"), ["meanGrainSize", "larger than the box"]),
     ]
-    utilityCase.checkRejected(binDir, "nmmVoronoiGrains", [(name, makeCase(work, name, entries), words)
-                                             for name, entries, words in broken])
+    utilityCase.checkRejected(binDir, "nmmVoronoiGrains", broken, makeCase, work)
 
     return utilityCase.report()
 

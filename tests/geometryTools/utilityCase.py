@@ -67,11 +67,12 @@ def polygonArea(points):
     return 0.5*math.fsum(p[0]*q[1] - q[0]*p[1] for p, q in zip(xy, xy[1:] + xy[:1]))
 
 
-def checkRejected(binDir, app, cases):
-    """Each of cases, (name, case folder, words), makes app exit 1 with a
-    message holding every one of the words."""
-    for name, case, words in cases:
-        r = run(binDir, app, case)
+def checkRejected(binDir, app, broken, makeCase, work):
+    """Each of broken, (name, entries, words), written by
+    makeCase(work, name, entries), makes app exit 1 with a message holding
+    every one of the words."""
+    for name, entries, words in broken:
+        r = run(binDir, app, makeCase(work, name, entries))
         missing = [w for w in words if w not in r.stderr]
         check(r.returncode == 1 and not missing,
               "%s: exit %d, message names %s" % (name, r.returncode, ", ".join(words)))

@@ -57,6 +57,35 @@ std::unique_ptr<nmm::nmmSolidModel> afterOneStep(const modelCase& c)
 }
 
 
+//- A width x 1 upper block pressed by sigma onto a fixed width x 1 lower
+//  one, on rollers at its left side: a fracture along y = 1. Static,
+//  small displacements, with more of system/nmmSolution in solution
+std::unique_ptr<modelCase> stackedBlocks
+(
+    double width,
+    double sigma,
+    double cellSize,
+    const std::string& solution
+)
+{
+    const std::string w = std::to_string(width), beyond = std::to_string(width + 1);
+    return std::make_unique<modelCase>
+    (
+        "lower { material rock; polygon ((0 0) (" + w + " 0) (" + w + " 1) (0 1)); }"
+        "upper { material rock; polygon ((0 1) (" + w + " 1) (" + w + " 2) (0 2)); }",
+        "bottom { type box; min (-1 -1); max (" + beyond + " 1e-9); }"
+        "top { type box; min (-1 1.999999); max (" + beyond + " 3); }"
+        "left { type box; min (-1 0.999999); max (1e-9 3); }",
+        "type structured; cellSize " + std::to_string(cellSize) + ";",
+        "analysis static; largeDisplacement no;\n" + solution,
+        "bottom { type fixedValue; value uniform (0 0 0); }"
+        "left { type fixedNormal; }"
+        "top { type tractionDisplacement; traction uniform (0 0 0); pressure uniform "
+            + std::to_string(sigma) + "; }"
+    );
+}
+
+
 //- The message of the couplingError that call throws
 template<class Call>
 std::string message(Call call)
@@ -338,21 +367,8 @@ TEST(couplingInterface, fracturePressureCarriesPartOfTheLoadAcrossAContact)
     // between them carry q, or q - p once a fluid at p fills the fracture
     // (the paper's effective normal force, Eq. 8)
     const double q = 10, p = 4;
-    const modelCase c
-    (
-        "lower { material rock; polygon ((0 0) (1 0) (1 1) (0 1)); }"
-        "upper { material rock; polygon ((0 1) (1 1) (1 2) (0 2)); }",
-        "bottom { type box; min (-1 -1); max (2 1e-9); }"
-        "top { type box; min (-1 1.999999); max (2 3); }"
-        "left { type box; min (-1 0.999999); max (1e-9 3); }",
-        "type structured; cellSize 0.25;",
-        "analysis static; largeDisplacement no;\n",
-        "bottom { type fixedValue; value uniform (0 0 0); }"
-        "left { type fixedNormal; }"
-        "top { type tractionDisplacement; traction uniform (0 0 0); pressure uniform "
-            + std::to_string(q) + "; }"
-    );
-    auto m = c.model();
+    const auto c = stackedBlocks(1, q, 0.25, "");
+    auto m = c->model();
     couplingInterface ci(*m);
     const auto regions = ci.regions();
     ASSERT_EQ(regions.back(), "fractures");
@@ -482,22 +498,9 @@ TEST(couplingInterface, hydroMechanicalFixedPointOnAClosedFracture)
     // loop: pressure from the apertures, the solid's step repeated under
     // that pressure, apertures back, until the pressure stops changing
     const double s = 10, pIn = 6, mu = 1e-3, ar = 1e-4;
-    const modelCase c
-    (
-        "lower { material rock; polygon ((0 0) (4 0) (4 1) (0 1)); }"
-        "upper { material rock; polygon ((0 1) (4 1) (4 2) (0 2)); }",
-        "bottom { type box; min (-1 -1); max (5 1e-9); }"
-        "top { type box; min (-1 1.999999); max (5 3); }"
-        "left { type box; min (-1 0.999999); max (1e-9 3); }",
-        "type structured; cellSize 0.5;",
-        "analysis static; largeDisplacement no;\n"
-        "contact { method penalty; maxOpenCloseIterations 30; }\n",
-        "bottom { type fixedValue; value uniform (0 0 0); }"
-        "left { type fixedNormal; }"
-        "top { type tractionDisplacement; traction uniform (0 0 0); pressure uniform "
-            + std::to_string(s) + "; }"
-    );
-    auto m = c.model();
+    const auto c = stackedBlocks(4, s, 0.5,
+        "contact { method penalty; maxOpenCloseIterations 30; }\n");
+    auto m = c->model();
     couplingInterface ci(*m);
     ci.setDeltaT(1);
     stepOnce(ci);
