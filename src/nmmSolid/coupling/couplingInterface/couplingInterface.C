@@ -41,9 +41,9 @@ std::pair<Eigen::Vector2d, Eigen::Vector2d> segmentEnds
 
 couplingInterface::couplingInterface(nmmSolidModel& model)
 :
-    model_(model),
-    upcoming_(model.upcomingContacts())
+    model_(model)
 {
+    findUpcoming();
     const auto& segments = model_.elements().segments();
     for (const geometryPatch& p : model_.geometry().patches())
     {
@@ -245,16 +245,29 @@ std::vector<Eigen::Vector2d> couplingInterface::displacement(const std::string& 
 }
 
 
+void couplingInterface::findUpcoming()
+{
+    const solidState& s = model_.state();
+    if (s.timeIndex == upcomingIndex_ && s.D.size() == upcomingD_.size() && s.D == upcomingD_)
+    {
+        return;
+    }
+    upcoming_ = model_.upcomingContacts();
+    upcomingIndex_ = s.timeIndex;
+    upcomingD_ = s.D;
+}
+
+
 void couplingInterface::acceptStep()
 {
     model_.acceptStep();
-    std::vector<contactRecord> next = model_.upcomingContacts();
-    bool changed = model_.lastStep().bondsBroken > 0 || next.size() != upcoming_.size();
-    for (std::size_t i = 0; i < next.size() && !changed; ++i)
+    const std::vector<contactRecord> before = upcoming_;
+    findUpcoming();
+    bool changed = model_.lastStep().bondsBroken > 0 || before.size() != upcoming_.size();
+    for (std::size_t i = 0; i < before.size() && !changed; ++i)
     {
-        changed = next[i].key() != upcoming_[i].key();
+        changed = before[i].key() != upcoming_[i].key();
     }
-    upcoming_ = std::move(next);
     if (changed) ++revision_;
 }
 
@@ -262,7 +275,7 @@ void couplingInterface::acceptStep()
 void couplingInterface::restoreState(const solidState& s)
 {
     model_.restoreState(s);
-    upcoming_ = model_.upcomingContacts();
+    findUpcoming();
 }
 
 
