@@ -215,6 +215,19 @@ void couplingInterface::setTemperature(const std::vector<double>& perBlock)
 }
 
 
+std::vector<double> couplingInterface::referenceTemperatures() const
+{
+    try
+    {
+        return model_.referenceTemperatures();
+    }
+    catch (const fatalError& e)
+    {
+        throw couplingError(e.what());
+    }
+}
+
+
 std::vector<Eigen::Vector2d> couplingInterface::displacement(const std::string& region) const
 {
     if (isFractures(region))
@@ -242,6 +255,28 @@ std::vector<Eigen::Vector2d> couplingInterface::displacement(const std::string& 
         result.push_back(length > 0 ? Eigen::Vector2d(integral/length) : integral);
     }
     return result;
+}
+
+
+std::vector<Eigen::Vector4d> couplingInterface::blockStress() const
+{
+    const std::size_t n = model_.geometry().blocks().size();
+    std::vector<Eigen::Vector4d> integral(n, Eigen::Vector4d::Zero());
+    std::vector<double> area(n, 0.0);
+    const auto& sigma = model_.latestState().sigma;
+    const auto& elements = model_.elements().elements();
+    for (std::size_t e = 0; e < elements.size(); ++e)
+    {
+        // The stress is constant over an element (linear displacement)
+        const auto b = std::size_t(elements[e].block);
+        integral[b] += elements[e].moments.area*sigma[e];
+        area[b] += elements[e].moments.area;
+    }
+    for (std::size_t b = 0; b < n; ++b)
+    {
+        if (area[b] > 0) integral[b] /= area[b];
+    }
+    return integral;
 }
 
 

@@ -568,16 +568,35 @@ void nmmSolidModel::setTemperature(std::vector<double> perBlock)
     }
     for (std::size_t b = 0; b < blocks.size() && !perBlock.empty(); ++b)
     {
-        const auto& props = *parts_.properties;
-        if (!props.material(materialOfBlock_[b]).hasThermalExpansion())
-        {
-            throw fatalError("block '" + blocks[b].name() + "': its material '"
-                + props.names()[materialOfBlock_[b]] + "' has no alpha and Tref in"
-                " constant/mechanicalProperties, so a temperature cannot strain it"
-                " (give alpha 0 for a material that does not expand)");
-        }
+        thermalMaterial(b);
     }
     temperature_ = std::move(perBlock);
+}
+
+
+const solidMaterial& nmmSolidModel::thermalMaterial(std::size_t b) const
+{
+    const auto& props = *parts_.properties;
+    const solidMaterial& m = props.material(materialOfBlock_[b]);
+    if (!m.hasThermalExpansion())
+    {
+        throw fatalError("block '" + parts_.geometry->blocks()[b].name() + "': its material '"
+            + props.names()[materialOfBlock_[b]] + "' has no alpha and Tref in"
+            " constant/mechanicalProperties, so a temperature cannot strain it"
+            " (give alpha 0 for a material that does not expand)");
+    }
+    return m;
+}
+
+
+std::vector<double> nmmSolidModel::referenceTemperatures() const
+{
+    std::vector<double> T;
+    for (std::size_t b = 0; b < parts_.geometry->blocks().size(); ++b)
+    {
+        T.push_back(thermalMaterial(b).Tref());
+    }
+    return T;
 }
 
 

@@ -1,0 +1,416 @@
+#include "nmmSolid/coupling/couplingVariables/couplingVariables.H"
+
+#include "nmmSolid/global/version.H"
+#include "nmmSolid/io/dictionary/IOerror.H"
+#include "nmmSolid/io/dictionary/dictionary.H"
+#include "nmmSolid/io/dictionary/keywordTable.H"
+
+#include <algorithm>
+#include <cstdio>
+#include <ostream>
+#include <sstream>
+#include <tuple>
+
+namespace nmm
+{
+
+namespace
+{
+
+const char* const fracturesRegion = "fractures";
+const char* const blocksRegion = "blocks";
+
+const keywordTable& dictKeywords()
+{
+    static const keywordTable table = []
+    {
+        keywordTable t("couplingDict", "what the solid exchanges with a coupled solver");
+        t.word("modelName", "name of the coupled model (the FMU's modelName)").required();
+        t.subDict("regions", "per region: the fields read and written").required();
+        t.scalar("residualAperture", "smallest aperture given for a closed contact",
+            "m").above(0);
+        return t;
+    }();
+    return table;
+}
+
+
+const keywordTable& regionKeywords()
+{
+    static const keywordTable table = []
+    {
+        keywordTable t("couplingDict region", "the fields of one region");
+        t.list("read", "fields the solid takes from the coupled solver").required();
+        t.list("write", "fields the solid gives back").required();
+        t.integer("maxFaces", "fractures only: the length of its arrays (the most"
+            " contacts the region may have)").atLeast(1);
+        return t;
+    }();
+    return table;
+}
+
+
+//- A field a region may exchange
+struct fieldSpec
+{
+    const char* name;
+    const char* unit;
+    std::size_t columns;    // 1: scalar per face, else [n, columns]
+    const char* description;
+};
+
+using specList = std::vector<fieldSpec>;
+
+const specList& readable(const std::string& kind)
+{
+    static const specList patch{{"pressure", "Pa", 1, "pressure on the face, acting as -p n"}};
+    static const specList fractures{{"pressure", "Pa", 1,
+        "fluid pressure in the contact, pushing its faces apart"}};
+    static const specList blocks{{"temperature", "K", 1, "temperature of the block"}};
+    return kind == fracturesRegion ? fractures : kind == blocksRegion ? blocks : patch;
+}
+
+
+const specList& writable(const std::string& kind)
+{
+    static const specList patch{{"displacement", "m", 2, "mean displacement of the face"}};
+    static const specList fractures
+    {
+        {"aperture", "m", 1, "opening of the contact, at least residualAperture"},
+        {"normalJump", "m", 1, "gap of the contact, negative when its faces overlap"},
+        {"slip", "m", 1, "slip accumulated while sliding, along the edge"},
+        {"contactTraction", "Pa", 2, "(normal, compression positive; shear, along the edge)"}
+    };
+    static const specList blocks{{"stress", "Pa", 4,
+        "(xx, yy, xy, zz) averaged over the block, tension positive"}};
+    return kind == fracturesRegion ? fractures : kind == blocksRegion ? blocks : patch;
+}
+
+
+const fieldSpec& findSpec(const specList& specs, const std::string& field, const entry& e,
+    const std::string& region, const char* what)
+{
+    std::vector<std::string> names;
+    for (const auto& s : specs)
+    {
+        if (field == s.name) return s;
+        names.push_back(s.name);
+    }
+    std::string valid;
+    for (const auto& n : names) valid += " " + n;
+    std::string msg = "region '" + region + "' cannot " + what + " '" + field + "'";
+    const std::string hint = didYouMean(field, names);
+    if (!hint.empty()) msg += "; " + hint;
+    throw e.error(msg + " (it can " + what + ":" + valid + ")");
+}
+
+
+std::string xmlEscaped(const std::string& s)
+{
+    std::string out;
+    for (const char c : s)
+    {
+        switch (c)
+        {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+
+std::string startText(const std::vector<double>& values)
+{
+    std::ostringstream os;
+    os.precision(17);
+    for (std::size_t i = 0; i < values.size(); ++i) os << (i ? " " : "") << values[i];
+    return os.str();
+}
+
+} // End anonymous namespace
+
+
+couplingVariable& couplingVariables::add(couplingVariable v)
+{
+    v.valueReference = std::uint32_t(variables_.size());
+    variables_.push_back(std::move(v));
+    return variables_.back();
+}
+
+
+void couplingVariables::addRegion
+(
+    const std::string& r,
+    const dictionary& spec,
+    const couplingInterface& solid
+)
+{
+    const auto& k = regionKeywords();
+    k.validate(spec);
+    const bool isBlocks = r == blocksRegion, isFractures = r == fracturesRegion;
+    if (spec.findEntry("maxFaces") && !isFractures)
+    {
+        throw spec.lookupEntry("maxFaces").error("maxFaces is for the region 'fractures' only");
+    }
+
+    // The size: fixed for patches and blocks, a capacity for fractures
+    couplingVariable size;
+    size.kind = couplingVariable::type::uint64;
+    size.region = r;
+    size.causality = "structuralParameter";
+    size.variability = "fixed";
+    if (isFractures)
+    {
+        capacity_ = std::size_t(k.get<long long>(spec, "maxFaces"));
+        size.name = r + ".capacity";
+        size.description = "length of the region's arrays (maxFaces)";
+        size.start = {double(capacity_)};
+    }
+    else
+    {
+        const std::size_t n = isBlocks ? solid.blocks().size() : solid.faces(r).size();
+        size.name = r + (isBlocks ? ".nBlocks" : ".nFaces");
+        size.description = isBlocks ? "number of blocks" : "number of faces";
+        size.start = {double(n)};
+    }
+    const std::uint32_t sizeRef = add(size).valueReference;
+
+    const auto addField = [&](const fieldSpec& f, const std::string& causality)
+    {
+        couplingVariable v;
+        v.name = r + "." + f.name;
+        v.region = r;
+        v.field = f.name;
+        v.causality = causality;
+        v.variability = "continuous";
+        v.unit = f.unit;
+        v.description = f.description;
+        v.sizeReferences = {sizeRef};
+        if (f.columns > 1) v.fixedSizes = {f.columns};
+        return v;
+    };
+    if (isFractures)
+    {
+        for (const char* name : {"nFaces", "topologyRevision"})
+        {
+            couplingVariable v;
+            v.name = r + "." + name;
+            v.region = r;
+            v.field = name;
+            v.kind = couplingVariable::type::uint64;
+            v.causality = "output";
+            v.variability = "discrete";
+            v.description = std::string(name) == "nFaces"
+                ? "number of faces (contacts) now; the first entries of the arrays"
+                : "changes when the faces do (contacts appear or vanish, bonds break)";
+            add(v);
+        }
+    }
+    if (!isBlocks)
+    {
+        add(addField({"midpoint", "m", 2, "midpoint of the face, where it is now"}, "output"));
+        add(addField({"normal", "", 2, "outward unit normal of the face"}, "output"));
+        add(addField({"length", "m", 1, "length of the face"}, "output"));
+    }
+    for (const auto& [key, specs, causality] :
+        {std::tuple{"read", &readable(r), "input"}, std::tuple{"write", &writable(r), "output"}})
+    {
+        const entry& e = spec.lookupEntry(key);
+        for (const auto& field : spec.get<std::vector<std::string>>(key))
+        {
+            const fieldSpec& f = findSpec(*specs, field, e, r, key);
+            couplingVariable v = addField(f, causality);
+            if (std::string(causality) == "input")
+            {
+                v.start = f.name == std::string("temperature")
+                    ? solid.referenceTemperatures()
+                    : std::vector<double>(isFractures ? capacity_ : std::size_t(size.start[0]), 0.0);
+            }
+            add(v);
+        }
+    }
+}
+
+
+couplingVariables::couplingVariables
+(
+    const std::filesystem::path& couplingDict,
+    const couplingInterface& solid
+)
+{
+    readOptions ro;
+    ro.caseDir = couplingDict.parent_path().parent_path();
+    const dictionary d = dictionary::read(couplingDict, ro);
+    dictKeywords().validate(d);
+    modelName_ = dictKeywords().get<std::string>(d, "modelName");
+
+    couplingVariable time;
+    time.name = "time";
+    time.causality = "independent";
+    time.variability = "continuous";
+    time.unit = "s";
+    time.description = "simulation time";
+    add(time);
+
+    const dictionary& regions = d.subDict("regions");
+    std::vector<std::string> known = solid.regions();
+    known.push_back(blocksRegion);
+    bool apertureWritten = false;
+    for (const std::string& r : regions.toc())
+    {
+        const entry& e = regions.lookupEntry(r);
+        if (std::find(known.begin(), known.end(), r) == known.end())
+        {
+            std::string valid;
+            for (const auto& n : known) valid += " " + n;
+            std::string msg = "unknown coupling region '" + r + "'";
+            const std::string hint = didYouMean(r, known);
+            if (!hint.empty()) msg += "; " + hint;
+            throw e.error(msg + " (regions of this case:" + valid + ")");
+        }
+        if (!regions.isDict(r)) throw e.error("region '" + r + "': expected a dictionary");
+        addRegion(r, regions.subDict(r), solid);
+        for (const auto& f : regions.subDict(r).get<std::vector<std::string>>("write"))
+        {
+            apertureWritten = apertureWritten || (r == fracturesRegion && f == "aperture");
+        }
+    }
+    if (apertureWritten)
+    {
+        residualAperture_ = dictKeywords().get<double>(d, "residualAperture");
+        couplingVariable v;
+        v.name = "fractures.residualAperture";
+        v.region = fracturesRegion;
+        v.field = "residualAperture";
+        v.causality = "parameter";
+        v.variability = "tunable";
+        v.unit = "m";
+        v.description = "smallest aperture given for a closed contact";
+        v.start = {residualAperture_};
+        add(v);
+    }
+}
+
+
+const couplingVariable* couplingVariables::find(std::uint32_t valueReference) const
+{
+    return valueReference < variables_.size() ? &variables_[valueReference] : nullptr;
+}
+
+
+const couplingVariable* couplingVariables::find(const std::string& name) const
+{
+    for (const auto& v : variables_)
+    {
+        if (v.name == name) return &v;
+    }
+    return nullptr;
+}
+
+
+std::size_t couplingVariables::size(const couplingVariable& v) const
+{
+    std::size_t n = 1;
+    for (const auto ref : v.sizeReferences) n *= std::size_t(variables_[ref].start[0]);
+    for (const auto s : v.fixedSizes) n *= s;
+    return n;
+}
+
+
+std::string couplingVariables::instantiationToken() const
+{
+    // FNV-1a over the variables as written, twice with different seeds
+    std::ostringstream os;
+    for (const auto& v : variables_)
+    {
+        os << v.name << ' ' << v.causality << ' ' << v.unit << ' ' << size(v) << ' '
+           << startText(v.start) << '\n';
+    }
+    const std::string text = os.str();
+    const auto fnv = [&](std::uint64_t h)
+    {
+        for (const unsigned char c : text) h = (h ^ c)*0x100000001b3ULL;
+        return h;
+    };
+    const std::uint64_t a = fnv(0xcbf29ce484222325ULL), b = fnv(0x84222325cbf29ce4ULL);
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "{%08llx-%04llx-%04llx-%04llx-%012llx}",
+        (unsigned long long)(a >> 32), (unsigned long long)((a >> 16) & 0xffff),
+        (unsigned long long)(a & 0xffff), (unsigned long long)(b >> 48),
+        (unsigned long long)(b & 0xffffffffffffULL));
+    return buf;
+}
+
+
+void couplingVariables::writeModelDescription
+(
+    std::ostream& os,
+    const std::string& modelIdentifier
+) const
+{
+    os << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+       << "<fmiModelDescription fmiVersion=\"3.0\" modelName=\"" << xmlEscaped(modelName_)
+       << "\" instantiationToken=\"" << instantiationToken()
+       << "\" description=\"nmmSolid: Numerical Manifold Method solid, coupled through"
+          " system/couplingDict\" generationTool=\"nmmFmuExport " << versionString
+       << "\" license=\"GPL-3.0-or-later\" variableNamingConvention=\"flat\">\n"
+       << "  <CoSimulation modelIdentifier=\"" << modelIdentifier
+       << "\" canHandleVariableCommunicationStepSize=\"true\" canGetAndSetFMUState=\"true\""
+          " canSerializeFMUState=\"false\" hasEventMode=\"false\""
+          " providesIntermediateUpdate=\"false\" canReturnEarlyAfterIntermediateUpdate=\"false\""
+          " needsExecutionTool=\"false\" canBeInstantiatedOnlyOncePerProcess=\"false\"/>\n"
+       << "  <UnitDefinitions>\n"
+          "    <Unit name=\"s\"><BaseUnit s=\"1\"/></Unit>\n"
+          "    <Unit name=\"m\"><BaseUnit m=\"1\"/></Unit>\n"
+          "    <Unit name=\"K\"><BaseUnit K=\"1\"/></Unit>\n"
+          "    <Unit name=\"Pa\"><BaseUnit kg=\"1\" m=\"-1\" s=\"-2\"/></Unit>\n"
+          "  </UnitDefinitions>\n"
+       << "  <LogCategories>\n"
+          "    <Category name=\"logStatusError\" description=\"wrong calls and failed steps\"/>\n"
+          "    <Category name=\"logStatusDiscard\" description=\"steps the solid could not"
+          " complete\"/>\n"
+          "  </LogCategories>\n"
+       << "  <DefaultExperiment startTime=\"0\" stepSize=\"1\"/>\n"
+       << "  <ModelVariables>\n";
+    for (const auto& v : variables_)
+    {
+        const char* type = v.kind == couplingVariable::type::uint64 ? "UInt64" : "Float64";
+        os << "    <" << type << " name=\"" << v.name << "\" valueReference=\""
+           << v.valueReference << "\" causality=\"" << v.causality << "\" variability=\""
+           << v.variability << "\"";
+        if (!v.unit.empty()) os << " unit=\"" << v.unit << "\"";
+        if (!v.start.empty()) os << " start=\"" << startText(v.start) << "\"";
+        os << " description=\"" << xmlEscaped(v.description) << "\"";
+        if (!v.isArray())
+        {
+            os << "/>\n";
+            continue;
+        }
+        os << ">\n";
+        for (const auto ref : v.sizeReferences)
+        {
+            os << "      <Dimension valueReference=\"" << ref << "\"/>\n";
+        }
+        for (const auto s : v.fixedSizes) os << "      <Dimension start=\"" << s << "\"/>\n";
+        os << "    </" << type << ">\n";
+    }
+    os << "  </ModelVariables>\n  <ModelStructure>\n";
+    for (const auto& v : variables_)
+    {
+        if (v.causality == "output") os << "    <Output valueReference=\"" << v.valueReference << "\"/>\n";
+    }
+    for (const auto& v : variables_)
+    {
+        if (v.causality == "output")
+        {
+            os << "    <InitialUnknown valueReference=\"" << v.valueReference << "\"/>\n";
+        }
+    }
+    os << "  </ModelStructure>\n</fmiModelDescription>\n";
+}
+
+} // End namespace nmm

@@ -1,0 +1,407 @@
+#include "nmmSolidFmu/fmuInstance/fmuInstance.H"
+
+#include "nmmSolid/io/case/caseFolder/caseFolder.H"
+#include "nmmSolid/solver/stepController/stepController.H"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nmm
+{
+
+namespace
+{
+
+const char* modeName(fmuInstance::mode m)
+{
+    switch (m)
+    {
+        case fmuInstance::mode::instantiated: return "instantiated";
+        case fmuInstance::mode::initialization: return "initialization";
+        case fmuInstance::mode::step: return "step";
+        case fmuInstance::mode::terminated: return "terminated";
+    }
+    return "unknown";
+}
+
+
+const char* typeName(couplingVariable::type t)
+{
+    return t == couplingVariable::type::uint64 ? "UInt64" : "Float64";
+}
+
+
+//- Vectors as rows of an [n, 2] array, padded with zeros to n rows
+template<class Vector>
+std::vector<double> rows(const std::vector<Vector>& v, std::size_t n)
+{
+    std::vector<double> out(n*std::size_t(Vector::RowsAtCompileTime), 0.0);
+    for (std::size_t i = 0; i < v.size() && i < n; ++i)
+    {
+        for (int k = 0; k < Vector::RowsAtCompileTime; ++k)
+        {
+            out[i*std::size_t(Vector::RowsAtCompileTime) + std::size_t(k)] = v[i][k];
+        }
+    }
+    return out;
+}
+
+} // End anonymous namespace
+
+
+fmuInstance::fmuInstance(const std::filesystem::path& resourcePath, const std::string& token)
+:
+    resources_(resourcePath),
+    token_(token)
+{
+    load();
+}
+
+
+void fmuInstance::load()
+{
+    solid_.reset();
+    model_ = nmmSolidModel::New(caseFolder(resources_));
+    solid_ = std::make_unique<couplingInterface>(*model_);
+    variables_ = std::make_unique<couplingVariables>(resources_/"system"/"couplingDict", *solid_);
+    if (variables_->instantiationToken() != token_)
+    {
+        throw fmuError("instantiationToken '" + token_ + "' is not the token of the case in "
+            + resources_.string() + " (" + variables_->instantiationToken() + "): the"
+            " resources are not those the modelDescription.xml was written for");
+    }
+    inputs_.clear();
+    for (const auto& v : variables_->variables())
+    {
+        if (v.causality == "input" || v.causality == "parameter") inputs_[v.valueReference] = v.start;
+    }
+    mode_ = mode::instantiated;
+    checkCapacity();
+}
+
+
+void fmuInstance::require(bool ok, const std::string& call, const char* needs) const
+{
+    if (!ok)
+    {
+        throw fmuError(call + " is not allowed in " + modeName(mode_) + " mode (" + needs + ")");
+    }
+}
+
+
+void fmuInstance::enterInitializationMode(double startTime)
+{
+    require(mode_ == mode::instantiated, "fmi3EnterInitializationMode",
+        "call it once after fmi3InstantiateCoSimulation or fmi3Reset");
+    const double t0 = solid_->time();
+    if (!(std::abs(startTime - t0) <= 1e-12*std::max(1.0, std::abs(t0))))
+    {
+        throw fmuError("startTime " + std::to_string(startTime) + " is not the case's start"
+            " time " + std::to_string(t0) + " (system/controlDict)");
+    }
+    mode_ = mode::initialization;
+}
+
+
+void fmuInstance::exitInitializationMode()
+{
+    require(mode_ == mode::initialization, "fmi3ExitInitializationMode",
+        "call fmi3EnterInitializationMode first");
+    mode_ = mode::step;
+}
+
+
+void fmuInstance::terminate()
+{
+    require(mode_ == mode::step || mode_ == mode::initialization, "fmi3Terminate",
+        "the instance is not initialized, or already terminated");
+    mode_ = mode::terminated;
+}
+
+
+void fmuInstance::reset()
+{
+    load();
+}
+
+
+const couplingVariable& fmuInstance::variable(std::uint32_t vr, couplingVariable::type kind) const
+{
+    const couplingVariable* v = variables_->find(vr);
+    if (!v)
+    {
+        throw fmuError("unknown value reference " + std::to_string(vr) + " (this FMU has 0 to "
+            + std::to_string(variables_->variables().size() - 1) + ")");
+    }
+    if (v->kind != kind)
+    {
+        throw fmuError("value reference " + std::to_string(vr) + " (" + v->name + ") is a "
+            + typeName(v->kind) + ", not a " + typeName(kind));
+    }
+    return *v;
+}
+
+
+void fmuInstance::checkCount
+(
+    const char* function,
+    const std::uint32_t vr[],
+    std::size_t nvr,
+    std::size_t nValues,
+    couplingVariable::type kind
+) const
+{
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < nvr; ++i) n += variables_->size(variable(vr[i], kind));
+    if (n != nValues)
+    {
+        throw fmuError(std::string(function) + ": the value references given have "
+            + std::to_string(n) + " values, nValues is " + std::to_string(nValues));
+    }
+}
+
+
+std::size_t fmuInstance::fracturesFaces() const
+{
+    return variables_->fracturesCapacity() > 0 ? solid_->faces("fractures").size() : 0;
+}
+
+
+void fmuInstance::checkCapacity() const
+{
+    const std::size_t n = fracturesFaces();
+    if (n > variables_->fracturesCapacity())
+    {
+        throw fmuError("region 'fractures' has " + std::to_string(n) + " faces, more than"
+            " its maxFaces " + std::to_string(variables_->fracturesCapacity())
+            + " (system/couplingDict): raise maxFaces and export the FMU again");
+    }
+}
+
+
+std::vector<double> fmuInstance::output(const couplingVariable& v) const
+{
+    const std::size_t n = v.isArray() ? std::size_t(variables_->variables()[v.sizeReferences[0]]
+        .start[0]) : 1;
+    const std::string& r = v.region;
+    const std::string& f = v.field;
+    if (v.name == "time") return {solid_->time()};
+    if (inputs_.count(v.valueReference)) return inputs_.at(v.valueReference);
+    if (f == "stress") return rows(solid_->blockStress(), n);
+    if (f == "midpoint" || f == "normal" || f == "length")
+    {
+        std::vector<Eigen::Vector2d> xy;
+        std::vector<Eigen::Matrix<double, 1, 1>> length;
+        for (const auto& face : solid_->faces(r))
+        {
+            xy.push_back(f == "midpoint" ? face.midpoint : face.normal);
+            length.push_back(Eigen::Matrix<double, 1, 1>(face.length));
+        }
+        return f == "length" ? rows(length, n) : rows(xy, n);
+    }
+    if (f == "displacement") return rows(solid_->displacement(r), n);
+    if (f == "contactTraction") return rows(solid_->contactTraction(), n);
+    std::vector<double> values = f == "aperture"
+        ? solid_->aperture(inputs_.at(variables_->find("fractures.residualAperture")
+            ->valueReference)[0])
+        : f == "normalJump" ? solid_->normalJump() : solid_->slip();
+    values.resize(n, 0.0);
+    return values;
+}
+
+
+void fmuInstance::getFloat64
+(
+    const std::uint32_t vr[],
+    std::size_t nvr,
+    double values[],
+    std::size_t n
+) const
+{
+    checkCount("fmi3GetFloat64", vr, nvr, n, couplingVariable::type::float64);
+    for (std::size_t i = 0; i < nvr; ++i)
+    {
+        const auto& v = variable(vr[i], couplingVariable::type::float64);
+        require(mode_ != mode::instantiated || inputs_.count(vr[i]), "fmi3GetFloat64 of "
+            + v.name, "outputs are computed from fmi3EnterInitializationMode on");
+    }
+    if (variables_->fracturesCapacity() > 0) checkCapacity();
+    for (std::size_t i = 0; i < nvr; ++i)
+    {
+        for (const double x : output(variable(vr[i], couplingVariable::type::float64))) *values++ = x;
+    }
+}
+
+
+void fmuInstance::apply(const couplingVariable& v, const std::vector<double>& values)
+{
+    if (v.field == "temperature")
+    {
+        solid_->setTemperature(values);
+    }
+    else if (v.field == "pressure")
+    {
+        const std::size_t n = v.region == "fractures" ? fracturesFaces() : values.size();
+        solid_->setPressure(v.region, std::vector<double>(values.begin(), values.begin() + long(n)));
+    }
+    else if (v.field == "residualAperture" && !(values[0] > 0))
+    {
+        throw couplingError("fractures.residualAperture must be positive, got "
+            + std::to_string(values[0]));
+    }
+}
+
+
+void fmuInstance::setFloat64
+(
+    const std::uint32_t vr[],
+    std::size_t nvr,
+    const double values[],
+    std::size_t n
+)
+{
+    require(mode_ != mode::terminated, "fmi3SetFloat64", "the instance is terminated");
+    checkCount("fmi3SetFloat64", vr, nvr, n, couplingVariable::type::float64);
+    for (std::size_t i = 0; i < nvr; ++i)
+    {
+        const auto& v = variable(vr[i], couplingVariable::type::float64);
+        if (!inputs_.count(vr[i]))
+        {
+            throw fmuError(v.name + " (value reference " + std::to_string(vr[i]) + ") is "
+                + (v.causality == "output" ? "an output" : "the " + v.causality)
+                + "; only inputs and parameters can be set");
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        if (!std::isfinite(values[i]))
+        {
+            throw fmuError("fmi3SetFloat64: value " + std::to_string(i) + " is not finite");
+        }
+    }
+    // Check every variable before changing any
+    std::vector<std::pair<const couplingVariable*, std::vector<double>>> changes;
+    for (std::size_t i = 0; i < nvr; ++i)
+    {
+        const auto& v = variable(vr[i], couplingVariable::type::float64);
+        const std::size_t size = variables_->size(v);
+        changes.emplace_back(&v, std::vector<double>(values, values + size));
+        values += size;
+    }
+    const auto saved = inputs_;
+    try
+    {
+        for (const auto& [v, x] : changes)
+        {
+            apply(*v, x);
+            inputs_[v->valueReference] = x;
+        }
+    }
+    catch (const couplingError& e)
+    {
+        inputs_ = saved;
+        for (const auto& [ref, x] : inputs_) apply(*variables_->find(ref), x);
+        throw fmuError(e.what());
+    }
+}
+
+
+void fmuInstance::getUInt64
+(
+    const std::uint32_t vr[],
+    std::size_t nvr,
+    std::uint64_t values[],
+    std::size_t n
+) const
+{
+    checkCount("fmi3GetUInt64", vr, nvr, n, couplingVariable::type::uint64);
+    for (std::size_t i = 0; i < nvr; ++i)
+    {
+        const auto& v = variable(vr[i], couplingVariable::type::uint64);
+        if (v.causality == "structuralParameter") values[i] = std::uint64_t(v.start[0]);
+        else
+        {
+            require(mode_ != mode::instantiated, "fmi3GetUInt64 of " + v.name,
+                "outputs are computed from fmi3EnterInitializationMode on");
+            values[i] = v.field == "nFaces" ? fracturesFaces()
+                : std::uint64_t(solid_->topologyRevision());
+        }
+    }
+}
+
+
+void fmuInstance::setUInt64(const std::uint32_t vr[], std::size_t nvr)
+{
+    for (std::size_t i = 0; i < nvr; ++i)
+    {
+        const auto& v = variable(vr[i], couplingVariable::type::uint64);
+        throw fmuError(v.name + " cannot be set: "
+            + (v.causality == "output" ? std::string("it is an output")
+               : "its value is fixed by the case (system/couplingDict, nmmMeshDict)"));
+    }
+}
+
+
+void fmuInstance::doStep(double t, double h)
+{
+    require(mode_ == mode::step, "fmi3DoStep", "call fmi3ExitInitializationMode first");
+    const double t0 = solid_->time();
+    if (!(std::abs(t - t0) <= 1e-12*std::max(1.0, std::abs(t0))))
+    {
+        throw fmuError("fmi3DoStep from " + std::to_string(t) + ", but the solid is at "
+            + std::to_string(t0) + " (restore a state with fmi3SetFMUState to go back)");
+    }
+    if (!(h > 0) || !std::isfinite(h))
+    {
+        throw fmuError("fmi3DoStep: communicationStepSize must be positive, got "
+            + std::to_string(h));
+    }
+    const stepControlSettings settings = model_->controls()
+        ? model_->controls()->stepControl() : stepControlSettings{};
+    stepController steps(settings, h, model_->scheme().dynamic());
+    const double tEnd = t0 + h;
+    while (tEnd - solid_->time() > 1e-12*h)
+    {
+        double dt = steps.next(tEnd - solid_->time());
+        const solidState saved = solid_->saveState();
+        for (;;)
+        {
+            solid_->setDeltaT(dt);
+            const stepReport report = solid_->solveStep();
+            if (report.converged)
+            {
+                steps.accepted(dt, report.displacementRatio);
+                break;
+            }
+            solid_->restoreState(saved);
+            const auto shorter = report.cutIsFutile ? std::nullopt : steps.cut(dt);
+            if (!shorter)
+            {
+                throw fmuDiscard("the solid cannot step from " + std::to_string(solid_->time())
+                    + ": " + report.cutReason, solid_->time());
+            }
+            dt = *shorter;
+        }
+        solid_->acceptStep();
+        checkCapacity();
+    }
+}
+
+
+std::unique_ptr<fmuInstance::state> fmuInstance::getState() const
+{
+    require(mode_ != mode::instantiated, "fmi3GetFMUState", "initialize the instance first");
+    return std::make_unique<state>(state{solid_->saveState(), inputs_, mode_});
+}
+
+
+void fmuInstance::setState(const state& s)
+{
+    require(mode_ != mode::instantiated, "fmi3SetFMUState", "initialize the instance first");
+    solid_->restoreState(s.solid);
+    inputs_ = s.inputs;
+    for (const auto& [ref, x] : inputs_) apply(*variables_->find(ref), x);
+    mode_ = s.at;
+}
+
+} // End namespace nmm

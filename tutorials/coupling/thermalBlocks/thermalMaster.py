@@ -1,0 +1,91 @@
+#!/usr/bin/python3
+# Needs Debian's /usr/bin/python3 (python3-numpy).
+"""Heat the two blocks of thermalBlocks.fmu through its FMI 3.0 interface
+and compare with the closed forms of thermal expansion.
+
+Usage:
+    thermalMaster.py <thermalBlocks.fmu> [dT, default 50]
+
+The importer raises both blocks' temperature by dT in one static step
+(blocks.temperature) and reads blocks.stress and the displacements of the
+free block's right and top faces. Plane strain, E = 50 GPa, nu = 0.25,
+alpha = 8e-6 /K (the case's granite):
+  - the free block (1 m x 2 m on rollers) holds only its zz strain, so it
+    expands in the plane by (1 + nu) alpha dT with no in-plane stress and
+    sigma_zz = -E alpha dT;
+  - the confined block (on rollers all round) cannot strain at all:
+    sigma_xx = sigma_yy = sigma_zz = -E alpha dT/(1 - 2 nu).
+Then it takes the solid back to the start with fmi3SetFMUState, repeats
+the step at 2 dT (the stresses double) and returns to Tref (all zero).
+Prints each quantity against its closed form.
+
+SPDX-License-Identifier: GPL-3.0-or-later
+"""
+
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+import fmi3Master  # noqa: E402
+
+E, NU, ALPHA, TREF = 50e9, 0.25, 8e-6, 293.15
+
+
+def closedForms(dT):
+    """(free block's in-plane strain, its sigma_zz, the confined stress)"""
+    return (1 + NU)*ALPHA*dT, -E*ALPHA*dT, -E*ALPHA*dT/(1 - 2*NU)
+
+
+def heat(solid, t, dT):
+    solid.set("blocks.temperature", [TREF + dT, TREF + dT])
+    status, _ = solid.doStep(t, 1.0)
+    if status != fmi3Master.OK:
+        raise SystemExit("the step was not completed: " + solid.lastMessage())
+    return {
+        "right": solid.get("freeRight.displacement")[0],
+        "top": solid.get("freeTop.displacement")[0],
+        "stress": solid.get("blocks.stress"),
+    }
+
+
+def report(r, dT):
+    eps, szz, sc = closedForms(dT)
+    free, confined = r["stress"]
+    rows = [
+        ("free: right face ux [m]", r["right"][0], eps*1.0),
+        ("free: top face uy [m]", r["top"][1], eps*2.0),
+        ("free: |in-plane stress| [Pa]", abs(free[:3]).max(), 0.0),
+        ("free: sigma_zz [Pa]", free[3], szz),
+        ("confined: sigma_xx [Pa]", confined[0], sc),
+        ("confined: sigma_yy [Pa]", confined[1], sc),
+        ("confined: sigma_xy [Pa]", confined[2], 0.0),
+        ("confined: sigma_zz [Pa]", confined[3], sc),
+    ]
+    print("dT = %g K" % dT)
+    for name, value, exact in rows:
+        print("    %-30s %14.6e   closed form %14.6e" % (name, value, exact))
+    return rows
+
+
+def main():
+    path = sys.argv[1]
+    dT = float(sys.argv[2]) if len(sys.argv) > 2 else 50.0
+    fmu = fmi3Master.fmu(path)
+    try:
+        solid = fmu.instantiate("thermal")
+        solid.enterInitializationMode(0.0)
+        solid.exitInitializationMode()
+        start = solid.getState()
+        report(heat(solid, 0.0, dT), dT)
+        solid.setState(start)
+        report(heat(solid, 0.0, 2*dT), 2*dT)
+        report(heat(solid, 1.0, 0.0), 0.0)
+        solid.freeState(start)
+        solid.terminate()
+        solid.free()
+    finally:
+        fmu.remove()
+
+
+if __name__ == "__main__":
+    main()
