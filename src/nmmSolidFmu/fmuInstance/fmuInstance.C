@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace nmm
 {
@@ -22,6 +23,15 @@ const char* modeName(fmuInstance::mode m)
         case fmuInstance::mode::terminated: return "terminated";
     }
     return "unknown";
+}
+
+
+std::string text(double x)
+{
+    std::ostringstream os;
+    os.precision(12);
+    os << x;
+    return os.str();
 }
 
 
@@ -80,24 +90,24 @@ void fmuInstance::load()
 }
 
 
-void fmuInstance::require(bool ok, const std::string& call, const char* needs) const
+void fmuInstance::require(bool ok, const std::string& what, const char* needs) const
 {
     if (!ok)
     {
-        throw fmuError(call + " is not allowed in " + modeName(mode_) + " mode (" + needs + ")");
+        throw fmuError(what + " is not allowed in " + modeName(mode_) + " mode (" + needs + ")");
     }
 }
 
 
 void fmuInstance::enterInitializationMode(double startTime)
 {
-    require(mode_ == mode::instantiated, "fmi3EnterInitializationMode",
-        "call it once after fmi3InstantiateCoSimulation or fmi3Reset");
+    require(mode_ == mode::instantiated, "initialization",
+        "enter it once after fmi3InstantiateCoSimulation or fmi3Reset");
     const double t0 = solid_->time();
     if (!(std::abs(startTime - t0) <= 1e-12*std::max(1.0, std::abs(t0))))
     {
-        throw fmuError("startTime " + std::to_string(startTime) + " is not the case's start"
-            " time " + std::to_string(t0) + " (system/controlDict)");
+        throw fmuError("startTime " + text(startTime) + " is not the case's start time "
+            + text(t0) + " (system/controlDict)");
     }
     mode_ = mode::initialization;
 }
@@ -105,7 +115,7 @@ void fmuInstance::enterInitializationMode(double startTime)
 
 void fmuInstance::exitInitializationMode()
 {
-    require(mode_ == mode::initialization, "fmi3ExitInitializationMode",
+    require(mode_ == mode::initialization, "leaving initialization",
         "call fmi3EnterInitializationMode first");
     mode_ = mode::step;
 }
@@ -113,7 +123,7 @@ void fmuInstance::exitInitializationMode()
 
 void fmuInstance::terminate()
 {
-    require(mode_ == mode::step || mode_ == mode::initialization, "fmi3Terminate",
+    require(mode_ == mode::step || mode_ == mode::initialization, "terminating",
         "the instance is not initialized, or already terminated");
     mode_ = mode::terminated;
 }
@@ -144,7 +154,6 @@ const couplingVariable& fmuInstance::variable(std::uint32_t vr, couplingVariable
 
 void fmuInstance::checkCount
 (
-    const char* function,
     const std::uint32_t vr[],
     std::size_t nvr,
     std::size_t nValues,
@@ -155,8 +164,8 @@ void fmuInstance::checkCount
     for (std::size_t i = 0; i < nvr; ++i) n += variables_->size(variable(vr[i], kind));
     if (n != nValues)
     {
-        throw fmuError(std::string(function) + ": the value references given have "
-            + std::to_string(n) + " values, nValues is " + std::to_string(nValues));
+        throw fmuError("the value references given have " + std::to_string(n)
+            + " values, nValues is " + std::to_string(nValues));
     }
 }
 
@@ -218,12 +227,12 @@ void fmuInstance::getFloat64
     std::size_t n
 ) const
 {
-    checkCount("fmi3GetFloat64", vr, nvr, n, couplingVariable::type::float64);
+    checkCount(vr, nvr, n, couplingVariable::type::float64);
     for (std::size_t i = 0; i < nvr; ++i)
     {
         const auto& v = variable(vr[i], couplingVariable::type::float64);
-        require(mode_ != mode::instantiated || inputs_.count(vr[i]), "fmi3GetFloat64 of "
-            + v.name, "outputs are computed from fmi3EnterInitializationMode on");
+        require(mode_ != mode::instantiated || inputs_.count(vr[i]), "reading " + v.name,
+            "outputs are computed from fmi3EnterInitializationMode on");
     }
     if (variables_->fracturesCapacity() > 0) checkCapacity();
     for (std::size_t i = 0; i < nvr; ++i)
@@ -247,7 +256,7 @@ void fmuInstance::apply(const couplingVariable& v, const std::vector<double>& va
     else if (v.field == "residualAperture" && !(values[0] > 0))
     {
         throw couplingError("fractures.residualAperture must be positive, got "
-            + std::to_string(values[0]));
+            + text(values[0]));
     }
 }
 
@@ -260,8 +269,8 @@ void fmuInstance::setFloat64
     std::size_t n
 )
 {
-    require(mode_ != mode::terminated, "fmi3SetFloat64", "the instance is terminated");
-    checkCount("fmi3SetFloat64", vr, nvr, n, couplingVariable::type::float64);
+    require(mode_ != mode::terminated, "setting inputs", "the instance is terminated");
+    checkCount(vr, nvr, n, couplingVariable::type::float64);
     for (std::size_t i = 0; i < nvr; ++i)
     {
         const auto& v = variable(vr[i], couplingVariable::type::float64);
@@ -276,7 +285,7 @@ void fmuInstance::setFloat64
     {
         if (!std::isfinite(values[i]))
         {
-            throw fmuError("fmi3SetFloat64: value " + std::to_string(i) + " is not finite");
+            throw fmuError("value " + std::to_string(i) + " is not finite");
         }
     }
     // Check every variable before changing any
@@ -314,14 +323,14 @@ void fmuInstance::getUInt64
     std::size_t n
 ) const
 {
-    checkCount("fmi3GetUInt64", vr, nvr, n, couplingVariable::type::uint64);
+    checkCount(vr, nvr, n, couplingVariable::type::uint64);
     for (std::size_t i = 0; i < nvr; ++i)
     {
         const auto& v = variable(vr[i], couplingVariable::type::uint64);
         if (v.causality == "structuralParameter") values[i] = std::uint64_t(v.start[0]);
         else
         {
-            require(mode_ != mode::instantiated, "fmi3GetUInt64 of " + v.name,
+            require(mode_ != mode::instantiated, "reading " + v.name,
                 "outputs are computed from fmi3EnterInitializationMode on");
             values[i] = v.field == "nFaces" ? fracturesFaces()
                 : std::uint64_t(solid_->topologyRevision());
@@ -344,17 +353,17 @@ void fmuInstance::setUInt64(const std::uint32_t vr[], std::size_t nvr)
 
 void fmuInstance::doStep(double t, double h)
 {
-    require(mode_ == mode::step, "fmi3DoStep", "call fmi3ExitInitializationMode first");
+    require(mode_ == mode::step, "a step", "steps are taken between"
+        " fmi3ExitInitializationMode and fmi3Terminate");
     const double t0 = solid_->time();
     if (!(std::abs(t - t0) <= 1e-12*std::max(1.0, std::abs(t0))))
     {
-        throw fmuError("fmi3DoStep from " + std::to_string(t) + ", but the solid is at "
-            + std::to_string(t0) + " (restore a state with fmi3SetFMUState to go back)");
+        throw fmuError("a step from " + text(t) + ", but the solid is at " + text(t0)
+            + " (restore a state with fmi3SetFMUState to go back)");
     }
     if (!(h > 0) || !std::isfinite(h))
     {
-        throw fmuError("fmi3DoStep: communicationStepSize must be positive, got "
-            + std::to_string(h));
+        throw fmuError("communicationStepSize must be positive and finite, got " + text(h));
     }
     const stepControlSettings settings = model_->controls()
         ? model_->controls()->stepControl() : stepControlSettings{};
@@ -377,7 +386,7 @@ void fmuInstance::doStep(double t, double h)
             const auto shorter = report.cutIsFutile ? std::nullopt : steps.cut(dt);
             if (!shorter)
             {
-                throw fmuDiscard("the solid cannot step from " + std::to_string(solid_->time())
+                throw fmuDiscard("the solid cannot step from " + text(solid_->time())
                     + ": " + report.cutReason, solid_->time());
             }
             dt = *shorter;
@@ -390,14 +399,14 @@ void fmuInstance::doStep(double t, double h)
 
 std::unique_ptr<fmuInstance::state> fmuInstance::getState() const
 {
-    require(mode_ != mode::instantiated, "fmi3GetFMUState", "initialize the instance first");
+    require(mode_ != mode::instantiated, "saving the state", "initialize the instance first");
     return std::make_unique<state>(state{solid_->saveState(), inputs_, mode_});
 }
 
 
 void fmuInstance::setState(const state& s)
 {
-    require(mode_ != mode::instantiated, "fmi3SetFMUState", "initialize the instance first");
+    require(mode_ != mode::instantiated, "restoring a state", "initialize the instance first");
     solid_->restoreState(s.solid);
     inputs_ = s.inputs;
     for (const auto& [ref, x] : inputs_) apply(*variables_->find(ref), x);
