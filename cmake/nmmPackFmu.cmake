@@ -1,21 +1,14 @@
 # Pack a tutorial case as an FMU (cmake -P, run by the build):
-#   -DCASE=<tutorial case> -DWORK=<scratch case> -DFMU=<output .fmu>
-#   -DMESH=<nmmMesh> -DEXPORT=<nmmFmuExport> -DBINARY=<nmmSolidFmi3.so>
-# The case is copied (its 0, constant and system) so that the source tree
-# is not written to; the logs stay beside the scratch case.
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
-foreach(dir 0 constant system)
-    file(COPY "${CASE}/${dir}" DESTINATION "${WORK}"
-        PATTERN "nmmMesh" EXCLUDE)
-endforeach()
-foreach(step "${MESH};-case;${WORK}" "${EXPORT};-case;${WORK};-o;${FMU};-binary;${BINARY}")
-    list(GET step 0 exe)
-    get_filename_component(name "${exe}" NAME)
-    execute_process(COMMAND ${step} RESULT_VARIABLE rc
-        OUTPUT_FILE "${WORK}/log.${name}" ERROR_FILE "${WORK}/log.${name}")
-    if(NOT rc EQUAL 0)
-        file(READ "${WORK}/log.${name}" log)
-        message(FATAL_ERROR "${name} failed on ${CASE}:\n${log}")
-    endif()
-endforeach()
+#   -DCASE=<tutorial case> -DFMU=<output .fmu> -DEXPORT=<nmmFmuExport>
+#   -DBINARY=<nmmSolidFmi3.so>
+# nmmFmuExport only reads the case; its log goes beside the FMU, and is
+# shown when it fails.
+get_filename_component(dir "${FMU}" DIRECTORY)
+file(MAKE_DIRECTORY "${dir}")
+set(log "${FMU}.log")
+execute_process(COMMAND "${EXPORT}" -case "${CASE}" -o "${FMU}" -binary "${BINARY}"
+    RESULT_VARIABLE rc OUTPUT_FILE "${log}" ERROR_FILE "${log}")
+if(NOT rc EQUAL 0)
+    file(READ "${log}" text)
+    message(FATAL_ERROR "nmmFmuExport failed on ${CASE}:\n${text}")
+endif()

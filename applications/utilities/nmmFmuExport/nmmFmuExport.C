@@ -3,12 +3,13 @@ Application
     nmmFmuExport
 
 Description
-    Pack a meshed case as an FMI 3.0 co-simulation FMU: read the case and
+    Pack a case as an FMI 3.0 co-simulation FMU: read the case and
     its system/couplingDict (nmm::couplingVariables), write the FMU's
     modelDescription.xml (every exchanged variable with its value
     reference, causality, unit and array dimensions), and zip it with the
     FMU binary (lib/nmmSolidFmi3.so, as binaries/x86_64-linux/nmmSolid.so)
-    and the case (0, constant and system, as resources/). An importer
+    and the case (0, constant and system, as resources/; not nmmMesh's
+    output, since the FMU builds the mesh from nmmMeshDict). An importer
     passes the extracted resources folder as resourcePath, and the FMU
     reads the case from there.
     The variable table is printed. Errors in the case or couplingDict name
@@ -71,14 +72,18 @@ void runIn(const fs::path& dir, const std::vector<std::string>& argv)
 }
 
 
+//- The case's input: 0, constant and system, without constant/nmmMesh
+//  (nmmMesh's output: the solid builds its mesh from system/nmmMeshDict)
 void copyCase(const fs::path& casePath, const fs::path& resources)
 {
-    fs::create_directories(resources);
     for (const char* dir : {"0", "constant", "system"})
     {
-        if (fs::exists(casePath/dir))
+        if (!fs::is_directory(casePath/dir)) continue;
+        fs::create_directories(resources/dir);
+        for (const auto& e : fs::directory_iterator(casePath/dir))
         {
-            fs::copy(casePath/dir, resources/dir, fs::copy_options::recursive);
+            if (e.path() == casePath/"constant"/"nmmMesh") continue;
+            fs::copy(e.path(), resources/dir/e.path().filename(), fs::copy_options::recursive);
         }
     }
 }
@@ -102,7 +107,7 @@ void printVariables(const nmm::couplingVariables& vars)
 int run(int argc, char* argv[])
 {
     nmm::argList args("nmmFmuExport",
-        "Pack a meshed case and its system/couplingDict as an FMI 3.0 co-simulation FMU");
+        "Pack a case and its system/couplingDict as an FMI 3.0 co-simulation FMU");
     args.addOption("o", "file.fmu", "the FMU to write (default: <case>/<modelName>.fmu)");
     args.addOption("binary", "file", "the FMU binary (default: the project's"
         " lib/nmmSolidFmi3.so)");

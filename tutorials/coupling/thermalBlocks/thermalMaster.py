@@ -33,7 +33,8 @@ E, NU, ALPHA, TREF = 50e9, 0.25, 8e-6, 293.15
 
 def closedForms(dT):
     """(free block's in-plane strain, its sigma_zz, the confined stress)"""
-    return (1 + NU)*ALPHA*dT, -E*ALPHA*dT, -E*ALPHA*dT/(1 - 2*NU)
+    # + 0.0: no negative zeros at dT = 0
+    return (1 + NU)*ALPHA*dT, -E*ALPHA*dT + 0.0, -E*ALPHA*dT/(1 - 2*NU) + 0.0
 
 
 def heat(solid, t, dT):
