@@ -333,6 +333,10 @@ TEST(couplingInterface, aConfinedBlockReachesTheThermalStress)
         EXPECT_NEAR(s[3], sigma, 1e-12*std::abs(sigma));
     }
 
+    // The block's mean stress is the same uniform stress
+    const Eigen::Vector4d mean = ci.blockStress().at(0);
+    EXPECT_LT((mean - Eigen::Vector4d(sigma, sigma, 0, sigma)).norm(), 1e-12*std::abs(sigma));
+
     // A restored step starts from the restored temperature
     const auto first = m->state().sigma;
     ci.restoreState(start);
