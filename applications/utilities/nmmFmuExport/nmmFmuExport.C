@@ -26,6 +26,7 @@ Usage
 #include "nmmSolid/global/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/case/caseFolder/caseFolder.H"
+#include "nmmSolid/io/dictionary/keywordTable.H"
 
 #include <fstream>
 #include <iomanip>
@@ -111,6 +112,9 @@ int run(int argc, char* argv[])
     args.addOption("o", "file.fmu", "the FMU to write (default: <case>/<modelName>.fmu)");
     args.addOption("binary", "file", "the FMU binary (default: the project's"
         " lib/nmmSolidFmi3.so)");
+    args.addKeywordHelp("system/couplingDict", nmm::couplingVariables::dictKeywords());
+    args.addKeywordHelp("system/couplingDict, each of regions",
+        nmm::couplingVariables::regionKeywords());
     if (args.parse(argc, argv) == nmm::argList::parseResult::done) return 0;
     args.printBanner(std::cout);
     const fs::path casePath = args.casePath();

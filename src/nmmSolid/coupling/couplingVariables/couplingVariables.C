@@ -20,7 +20,10 @@ namespace
 const char* const fracturesRegion = "fractures";
 const char* const blocksRegion = "blocks";
 
-const keywordTable& dictKeywords()
+} // End anonymous namespace
+
+
+const keywordTable& couplingVariables::dictKeywords()
 {
     static const keywordTable table = []
     {
@@ -35,7 +38,7 @@ const keywordTable& dictKeywords()
 }
 
 
-const keywordTable& regionKeywords()
+const keywordTable& couplingVariables::regionKeywords()
 {
     static const keywordTable table = []
     {
@@ -49,6 +52,9 @@ const keywordTable& regionKeywords()
     return table;
 }
 
+
+namespace
+{
 
 //- A field a region may exchange
 struct fieldSpec
