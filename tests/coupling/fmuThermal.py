@@ -13,7 +13,11 @@ or of the free expansion (displacements):
   - the free block on rollers expands by (1 + nu) alpha dT in x and y,
     with no in-plane stress and sigma_zz = -E alpha dT;
   - the confined block: sigma_xx = sigma_yy = sigma_zz = -E alpha dT/(1 - 2 nu),
-    sigma_xy = 0.
+    sigma_xy = 0;
+  - the free block's hole, the only pore (pores.area, centroid, porosity):
+    its sides stretch by 1 + (1 + nu) alpha dT, its centroid moves with the
+    material from the rollers, and the enclosed porosity is its area over
+    both blocks' outer areas.
 The state before the step is restored with fmi3SetFMUState and the step
 repeated at 2 dT: every output doubles, to the same tolerance. A last
 step back to Tref returns every output to zero.
@@ -45,6 +49,12 @@ def checkStep(t, tm, r, dT, scaleDT):
     for k, name in enumerate(("xx", "yy", "xy", "zz")):
         t.close(TOL, confined[k], 0.0 if name == "xy" else sc, stressScale,
                 what + "confined block, sigma_" + name)
+    grown = (1 + eps)**2
+    if t.check(len(r["pores"]) == 1, what + "one pore, the free block's hole"):
+        t.close(TOL, r["pores"][0], tm.HOLE*grown, tm.HOLE, what + "its area")
+        t.close(TOL, r["centroids"][0][0], 0.5*(1 + eps), 1.0, what + "its centroid, x")
+        t.close(TOL, r["centroids"][0][1], 1.0*(1 + eps), 1.0, what + "its centroid, y")
+    t.close(TOL, r["porosity"], tm.HOLE*grown/(2*grown + 2), 1.0, what + "enclosed porosity")
 
 
 def main():

@@ -128,7 +128,8 @@ TEST(couplingVariables, followTheDictionaryInOrderWithTheirSizesAndUnits)
     EXPECT_EQ(vars.find("fractures.capacity")->causality, "structuralParameter");
     EXPECT_EQ(vars.find("fractures.nFaces")->kind, nmm::couplingVariable::type::uint64);
     EXPECT_EQ(vars.find("fractures.residualAperture")->start, std::vector<double>{1e-6});
-    EXPECT_EQ(vars.fracturesCapacity(), 50u);
+    EXPECT_EQ(vars.capacity("fractures"), 50u);
+    EXPECT_EQ(vars.capacity("pores"), 0u);
 }
 
 
@@ -203,4 +204,27 @@ TEST(couplingVariables, aTemperatureNeedsTheMaterialsAlpha)
     {
         EXPECT_NE(std::string(e.what()).find("has no alpha and Tref"), std::string::npos);
     }
+}
+
+
+TEST(couplingVariables, poresHaveACapacityAndOnePorosity)
+{
+    const auto c = twoBlocks("modelName m;\n"
+        "regions { pores { read (); write (area centroid porosity); maxPores 10; } }\n");
+    const couplingVariables vars = read(*c);
+    const std::vector<std::string> names
+        {"time", "pores.capacity", "pores.nPores", "pores.area", "pores.centroid", "pores.porosity"};
+    ASSERT_EQ(vars.variables().size(), names.size());
+    for (std::size_t i = 0; i < names.size(); ++i) EXPECT_EQ(vars.variables()[i].name, names[i]);
+    EXPECT_EQ(vars.capacity("pores"), 10u);
+    EXPECT_EQ(vars.size(*vars.find("pores.area")), 10u);
+    EXPECT_EQ(vars.find("pores.area")->unit, "m2");
+    EXPECT_EQ(vars.size(*vars.find("pores.centroid")), 20u);
+    EXPECT_FALSE(vars.find("pores.porosity")->isArray());
+    EXPECT_EQ(vars.find("pores.nPores")->causality, "output");
+
+    EXPECT_EQ(error("modelName m; regions { pores { read (pressure); write (); maxPores 1; } }\n"),
+        "2: region 'pores' cannot read 'pressure' (it can read nothing)");
+    EXPECT_EQ(error("modelName m; regions { top { read (); write (); maxPores 1; } }\n"),
+        "2: maxPores is for the region 'pores' only");
 }

@@ -172,18 +172,27 @@ void fmuInstance::checkCount
 
 std::size_t fmuInstance::fracturesFaces() const
 {
-    return variables_->fracturesCapacity() > 0 ? solid_->faces("fractures").size() : 0;
+    return variables_->capacity("fractures") > 0 ? solid_->faces("fractures").size() : 0;
 }
 
 
 void fmuInstance::checkCapacity() const
 {
-    const std::size_t n = fracturesFaces();
-    if (n > variables_->fracturesCapacity())
+    const auto check = [&](const char* region, std::size_t n, const char* what,
+        const char* keyword)
     {
-        throw fmuError("region 'fractures' has " + std::to_string(n) + " faces, more than"
-            " its maxFaces " + std::to_string(variables_->fracturesCapacity())
-            + " (system/couplingDict): raise maxFaces and export the FMU again");
+        if (n > variables_->capacity(region))
+        {
+            throw fmuError("region '" + std::string(region) + "' has " + std::to_string(n)
+                + " " + what + ", more than its " + keyword + " "
+                + std::to_string(variables_->capacity(region)) + " (system/couplingDict):"
+                " raise " + keyword + " and export the FMU again");
+        }
+    };
+    check("fractures", fracturesFaces(), "faces", "maxFaces");
+    if (variables_->capacity("pores") > 0)
+    {
+        check("pores", solid_->pores().pores.size(), "pores", "maxPores");
     }
 }
 
@@ -197,6 +206,7 @@ std::vector<double> fmuInstance::output(const couplingVariable& v) const
     if (v.name == "time") return {solid_->time()};
     if (inputs_.count(v.valueReference)) return inputs_.at(v.valueReference);
     if (f == "stress") return rows(solid_->blockStress(), n);
+    if (r == "pores") return poreOutput(f, n);
     if (f == "midpoint" || f == "normal" || f == "length")
     {
         std::vector<Eigen::Vector2d> xy;
@@ -219,6 +229,21 @@ std::vector<double> fmuInstance::output(const couplingVariable& v) const
 }
 
 
+std::vector<double> fmuInstance::poreOutput(const std::string& field, std::size_t n) const
+{
+    const poreSpace p = solid_->pores();
+    if (field == "porosity") return {p.porosity()};
+    std::vector<Eigen::Vector2d> centroid;
+    std::vector<Eigen::Matrix<double, 1, 1>> area;
+    for (const auto& pore : p.pores)
+    {
+        centroid.push_back(pore.centroid);
+        area.push_back(Eigen::Matrix<double, 1, 1>(pore.area));
+    }
+    return field == "area" ? rows(area, n) : rows(centroid, n);
+}
+
+
 void fmuInstance::getFloat64
 (
     const std::uint32_t vr[],
@@ -234,7 +259,7 @@ void fmuInstance::getFloat64
         require(mode_ != mode::instantiated || inputs_.count(vr[i]), "reading " + v.name,
             "outputs are computed from fmi3EnterInitializationMode on");
     }
-    if (variables_->fracturesCapacity() > 0) checkCapacity();
+    checkCapacity();
     for (std::size_t i = 0; i < nvr; ++i)
     {
         for (const double x : output(variable(vr[i], couplingVariable::type::float64))) *values++ = x;
@@ -333,6 +358,7 @@ void fmuInstance::getUInt64
             require(mode_ != mode::instantiated, "reading " + v.name,
                 "outputs are computed from fmi3EnterInitializationMode on");
             values[i] = v.field == "nFaces" ? fracturesFaces()
+                : v.field == "nPores" ? solid_->pores().pores.size()
                 : std::uint64_t(solid_->topologyRevision());
         }
     }

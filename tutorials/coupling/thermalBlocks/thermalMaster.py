@@ -12,7 +12,9 @@ free block's right and top faces. Plane strain, E = 50 GPa, nu = 0.25,
 alpha = 8e-6 /K (the case's granite):
   - the free block (1 m x 2 m on rollers) holds only its zz strain, so it
     expands in the plane by (1 + nu) alpha dT with no in-plane stress and
-    sigma_zz = -E alpha dT;
+    sigma_zz = -E alpha dT; its hole (the only pore, 0.4 m2) grows by
+    (1 + (1 + nu) alpha dT)^2, and the enclosed porosity is the hole over
+    both blocks' outer areas (2 (1 + (1 + nu) alpha dT)^2 + 2 m2);
   - the confined block (on rollers all round) cannot strain at all:
     sigma_xx = sigma_yy = sigma_zz = -E alpha dT/(1 - 2 nu).
 Then it takes the solid back to the start with fmi3SetFMUState, repeats
@@ -22,6 +24,7 @@ Prints each quantity against its closed form.
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 
+import math
 import sys
 from pathlib import Path
 
@@ -29,6 +32,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 import fmi3Master  # noqa: E402
 
 E, NU, ALPHA, TREF = 50e9, 0.25, 8e-6, 293.15
+HOLE = 0.4      # the free block's hole (its only pore) [m2]
 
 
 def closedForms(dT):
@@ -42,10 +46,14 @@ def heat(solid, t, dT):
     status, _ = solid.doStep(t, 1.0)
     if status != fmi3Master.OK:
         raise SystemExit("the step was not completed: " + solid.lastMessage())
+    n = int(solid.get("pores.nPores"))
     return {
         "right": solid.get("freeRight.displacement")[0],
         "top": solid.get("freeTop.displacement")[0],
         "stress": solid.get("blocks.stress"),
+        "pores": solid.get("pores.area")[:n],
+        "centroids": solid.get("pores.centroid")[:n],
+        "porosity": solid.get("pores.porosity"),
     }
 
 
@@ -61,6 +69,9 @@ def report(r, dT):
         ("confined: sigma_yy [Pa]", confined[1], sc),
         ("confined: sigma_xy [Pa]", confined[2], 0.0),
         ("confined: sigma_zz [Pa]", confined[3], sc),
+        ("free: pore area [m2]", r["pores"][0] if len(r["pores"]) == 1 else math.nan,
+         HOLE*(1 + eps)**2),
+        ("enclosed porosity", r["porosity"], HOLE*(1 + eps)**2/(2*(1 + eps)**2 + 2)),
     ]
     print("dT = %g K" % dT)
     for name, value, exact in rows:

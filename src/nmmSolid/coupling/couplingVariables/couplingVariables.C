@@ -19,6 +19,7 @@ namespace
 
 const char* const fracturesRegion = "fractures";
 const char* const blocksRegion = "blocks";
+const char* const poresRegion = "pores";
 
 } // End anonymous namespace
 
@@ -47,6 +48,8 @@ const keywordTable& couplingVariables::regionKeywords()
         t.list("write", "fields the solid gives back").required();
         t.integer("maxFaces", "fractures only: the length of its arrays (the most"
             " contacts the region may have)").atLeast(1);
+        t.integer("maxPores", "pores only: the length of its arrays (the most pores"
+            " the blocks may enclose)").atLeast(1);
         return t;
     }();
     return table;
@@ -73,7 +76,9 @@ const specList& readable(const std::string& kind)
     static const specList fractures{{"pressure", "Pa", 1,
         "fluid pressure in the contact, pushing its faces apart"}};
     static const specList blocks{{"temperature", "K", 1, "temperature of the block"}};
-    return kind == fracturesRegion ? fractures : kind == blocksRegion ? blocks : patch;
+    static const specList pores{};
+    return kind == fracturesRegion ? fractures : kind == blocksRegion ? blocks
+        : kind == poresRegion ? pores : patch;
 }
 
 
@@ -89,7 +94,15 @@ const specList& writable(const std::string& kind)
     };
     static const specList blocks{{"stress", "Pa", 4,
         "(xx, yy, xy, zz) averaged over the block, tension positive"}};
-    return kind == fracturesRegion ? fractures : kind == blocksRegion ? blocks : patch;
+    static const specList pores
+    {
+        {"area", "m2", 1, "area of the pore, where it is now"},
+        {"centroid", "m", 2, "centroid of the pore, where it is now"},
+        {"porosity", "", 0, "the pores' area over the area inside the blocks' outer"
+            " boundaries"}
+    };
+    return kind == fracturesRegion ? fractures : kind == blocksRegion ? blocks
+        : kind == poresRegion ? pores : patch;
 }
 
 
@@ -107,7 +120,8 @@ const fieldSpec& findSpec(const specList& specs, const std::string& field, const
     std::string msg = "region '" + region + "' cannot " + what + " '" + field + "'";
     const std::string hint = didYouMean(field, names);
     if (!hint.empty()) msg += "; " + hint;
-    throw e.error(msg + " (it can " + what + ":" + valid + ")");
+    throw e.error(msg + (valid.empty() ? std::string(" (it can " + std::string(what)
+        + " nothing)") : " (it can " + std::string(what) + ":" + valid + ")"));
 }
 
 
@@ -137,6 +151,12 @@ std::string startText(const std::vector<double>& values)
     return os.str();
 }
 
+//- The keyword giving the capacity of a region whose faces come and go
+const char* capacityKeyword(const std::string& r)
+{
+    return r == fracturesRegion ? "maxFaces" : r == poresRegion ? "maxPores" : nullptr;
+}
+
 } // End anonymous namespace
 
 
@@ -148,6 +168,68 @@ couplingVariable& couplingVariables::add(couplingVariable v)
 }
 
 
+couplingVariable couplingVariables::sizeOf
+(
+    const std::string& r,
+    const dictionary& spec,
+    const couplingInterface& solid
+)
+{
+    for (const std::string keyword : {"maxFaces", "maxPores"})
+    {
+        const char* own = capacityKeyword(r);
+        if (spec.findEntry(keyword) && !(own && keyword == own))
+        {
+            throw spec.lookupEntry(keyword).error(keyword + " is for the region '"
+                + (keyword == "maxFaces" ? fracturesRegion : poresRegion) + "' only");
+        }
+    }
+    couplingVariable size;
+    size.kind = couplingVariable::type::uint64;
+    size.region = r;
+    size.causality = "structuralParameter";
+    size.variability = "fixed";
+    if (const char* keyword = capacityKeyword(r))
+    {
+        capacity_[r] = std::size_t(regionKeywords().get<long long>(spec, keyword));
+        size.name = r + ".capacity";
+        size.description = std::string("length of the region's arrays (") + keyword + ")";
+        size.start = {double(capacity_[r])};
+        return size;
+    }
+    const bool isBlocks = r == blocksRegion;
+    size.name = r + (isBlocks ? ".nBlocks" : ".nFaces");
+    size.description = isBlocks ? "number of blocks" : "number of faces";
+    size.start = {double(isBlocks ? solid.blocks().size() : solid.faces(r).size())};
+    return size;
+}
+
+
+void couplingVariables::addCounts(const std::string& r)
+{
+    std::vector<std::pair<const char*, const char*>> counts;
+    if (r == fracturesRegion)
+    {
+        counts = {{"nFaces", "number of faces (contacts) now; the first entries of the arrays"},
+                  {"topologyRevision", "changes when the faces do (contacts appear or vanish,"
+                   " bonds break)"}};
+    }
+    if (r == poresRegion) counts = {{"nPores", "number of pores now; the first entries of the arrays"}};
+    for (const auto& [name, description] : counts)
+    {
+        couplingVariable v;
+        v.name = r + "." + name;
+        v.region = r;
+        v.field = name;
+        v.kind = couplingVariable::type::uint64;
+        v.causality = "output";
+        v.variability = "discrete";
+        v.description = description;
+        add(v);
+    }
+}
+
+
 void couplingVariables::addRegion
 (
     const std::string& r,
@@ -155,37 +237,12 @@ void couplingVariables::addRegion
     const couplingInterface& solid
 )
 {
-    const auto& k = regionKeywords();
-    k.validate(spec);
-    const bool isBlocks = r == blocksRegion, isFractures = r == fracturesRegion;
-    if (spec.findEntry("maxFaces") && !isFractures)
-    {
-        throw spec.lookupEntry("maxFaces").error("maxFaces is for the region 'fractures' only");
-    }
-
-    // The size: fixed for patches and blocks, a capacity for fractures
-    couplingVariable size;
-    size.kind = couplingVariable::type::uint64;
-    size.region = r;
-    size.causality = "structuralParameter";
-    size.variability = "fixed";
-    if (isFractures)
-    {
-        capacity_ = std::size_t(k.get<long long>(spec, "maxFaces"));
-        size.name = r + ".capacity";
-        size.description = "length of the region's arrays (maxFaces)";
-        size.start = {double(capacity_)};
-    }
-    else
-    {
-        const std::size_t n = isBlocks ? solid.blocks().size() : solid.faces(r).size();
-        size.name = r + (isBlocks ? ".nBlocks" : ".nFaces");
-        size.description = isBlocks ? "number of blocks" : "number of faces";
-        size.start = {double(n)};
-    }
+    regionKeywords().validate(spec);
+    const couplingVariable size = sizeOf(r, spec, solid);
     const std::uint32_t sizeRef = add(size).valueReference;
+    addCounts(r);
 
-    const auto addField = [&](const fieldSpec& f, const std::string& causality)
+    const auto field = [&](const fieldSpec& f, const std::string& causality)
     {
         couplingVariable v;
         v.name = r + "." + f.name;
@@ -195,46 +252,29 @@ void couplingVariables::addRegion
         v.variability = "continuous";
         v.unit = f.unit;
         v.description = f.description;
-        v.sizeReferences = {sizeRef};
+        // columns 0: one value for the region
+        if (f.columns > 0) v.sizeReferences = {sizeRef};
         if (f.columns > 1) v.fixedSizes = {f.columns};
         return v;
     };
-    if (isFractures)
+    if (r != blocksRegion && r != poresRegion)
     {
-        for (const char* name : {"nFaces", "topologyRevision"})
-        {
-            couplingVariable v;
-            v.name = r + "." + name;
-            v.region = r;
-            v.field = name;
-            v.kind = couplingVariable::type::uint64;
-            v.causality = "output";
-            v.variability = "discrete";
-            v.description = std::string(name) == "nFaces"
-                ? "number of faces (contacts) now; the first entries of the arrays"
-                : "changes when the faces do (contacts appear or vanish, bonds break)";
-            add(v);
-        }
-    }
-    if (!isBlocks)
-    {
-        add(addField({"midpoint", "m", 2, "midpoint of the face, where it is now"}, "output"));
-        add(addField({"normal", "", 2, "outward unit normal of the face"}, "output"));
-        add(addField({"length", "m", 1, "length of the face"}, "output"));
+        add(field({"midpoint", "m", 2, "midpoint of the face, where it is now"}, "output"));
+        add(field({"normal", "", 2, "outward unit normal of the face"}, "output"));
+        add(field({"length", "m", 1, "length of the face"}, "output"));
     }
     for (const auto& [key, specs, causality] :
         {std::tuple{"read", &readable(r), "input"}, std::tuple{"write", &writable(r), "output"}})
     {
         const entry& e = spec.lookupEntry(key);
-        for (const auto& field : spec.get<std::vector<std::string>>(key))
+        for (const auto& name : spec.get<std::vector<std::string>>(key))
         {
-            const fieldSpec& f = findSpec(*specs, field, e, r, key);
-            couplingVariable v = addField(f, causality);
+            const fieldSpec& f = findSpec(*specs, name, e, r, key);
+            couplingVariable v = field(f, causality);
             if (std::string(causality) == "input")
             {
-                v.start = f.name == std::string("temperature")
-                    ? solid.referenceTemperatures()
-                    : std::vector<double>(isFractures ? capacity_ : std::size_t(size.start[0]), 0.0);
+                v.start = f.name == std::string("temperature") ? solid.referenceTemperatures()
+                    : std::vector<double>(std::size_t(size.start[0]), 0.0);
             }
             add(v);
         }
@@ -265,6 +305,7 @@ couplingVariables::couplingVariables
     const dictionary& regions = d.subDict("regions");
     std::vector<std::string> known = solid.regions();
     known.push_back(blocksRegion);
+    known.push_back(poresRegion);
     bool apertureWritten = false;
     for (const std::string& r : regions.toc())
     {
@@ -372,6 +413,7 @@ void couplingVariables::writeModelDescription
        << "  <UnitDefinitions>\n"
           "    <Unit name=\"s\"><BaseUnit s=\"1\"/></Unit>\n"
           "    <Unit name=\"m\"><BaseUnit m=\"1\"/></Unit>\n"
+          "    <Unit name=\"m2\"><BaseUnit m=\"2\"/></Unit>\n"
           "    <Unit name=\"K\"><BaseUnit K=\"1\"/></Unit>\n"
           "    <Unit name=\"Pa\"><BaseUnit kg=\"1\" m=\"-1\" s=\"-2\"/></Unit>\n"
           "  </UnitDefinitions>\n"

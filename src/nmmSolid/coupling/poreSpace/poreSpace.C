@@ -1,0 +1,99 @@
+#include "nmmSolid/coupling/poreSpace/poreSpace.H"
+
+#include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_with_holes_2.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace nmm
+{
+
+namespace
+{
+
+using K = CGAL::Exact_predicates_exact_constructions_kernel;
+using cgalPolygon = CGAL::Polygon_2<K>;
+using cgalPolygonWithHoles = CGAL::Polygon_with_holes_2<K>;
+
+
+//- The loop as a simple polygon of the given orientation
+cgalPolygon polygon(const poreSpace::loop& points, CGAL::Orientation o, std::size_t block)
+{
+    cgalPolygon p;
+    for (const auto& x : points)
+    {
+        const K::Point_2 q(x.x(), x.y());
+        // Points where an edge crosses a cover line may coincide with a vertex
+        if (p.is_empty() || (q != *(p.vertices_end() - 1) && q != *p.vertices_begin()))
+        {
+            p.push_back(q);
+        }
+    }
+    if (p.size() < 3 || !p.is_simple())
+    {
+        throw std::invalid_argument("the outline of block " + std::to_string(block)
+            + " is not a simple polygon where it is now");
+    }
+    if (p.orientation() != o) p.reverse_orientation();
+    return p;
+}
+
+
+poreSpace::pore poreOf(const cgalPolygon& hole)
+{
+    // The hole runs clockwise: its signed area is minus the pore's
+    double a = 0;
+    Eigen::Vector2d c = Eigen::Vector2d::Zero();
+    for (auto e = hole.edges_begin(); e != hole.edges_end(); ++e)
+    {
+        const Eigen::Vector2d p(CGAL::to_double(e->source().x()), CGAL::to_double(e->source().y()));
+        const Eigen::Vector2d q(CGAL::to_double(e->target().x()), CGAL::to_double(e->target().y()));
+        const double cross = p.x()*q.y() - q.x()*p.y();
+        a += cross;
+        c += cross*(p + q);
+    }
+    poreSpace::pore result;
+    result.area = -0.5*a;
+    if (a != 0) result.centroid = c/(3*a);
+    return result;
+}
+
+} // End anonymous namespace
+
+
+poreSpace poreSpace::of(const std::vector<std::vector<loop>>& blocks)
+{
+    std::vector<cgalPolygonWithHoles> shapes;
+    for (std::size_t b = 0; b < blocks.size(); ++b)
+    {
+        if (blocks[b].empty()) continue;
+        std::vector<cgalPolygon> holes;
+        for (std::size_t h = 1; h < blocks[b].size(); ++h)
+        {
+            holes.push_back(polygon(blocks[b][h], CGAL::CLOCKWISE, b));
+        }
+        shapes.emplace_back(polygon(blocks[b][0], CGAL::COUNTERCLOCKWISE, b),
+            holes.begin(), holes.end());
+    }
+    std::vector<cgalPolygonWithHoles> united;
+    CGAL::join(shapes.begin(), shapes.end(), std::back_inserter(united));
+
+    poreSpace result;
+    for (const auto& u : united)
+    {
+        const double outer = CGAL::to_double(u.outer_boundary().area());
+        result.enclosedArea += outer;
+        result.solidArea += outer;
+        for (auto h = u.holes_begin(); h != u.holes_end(); ++h)
+        {
+            result.pores.push_back(poreOf(*h));
+            result.solidArea -= result.pores.back().area;
+        }
+    }
+    return result;
+}
+
+} // End namespace nmm
