@@ -259,7 +259,6 @@ void fmuInstance::getFloat64
         require(mode_ != mode::instantiated || inputs_.count(vr[i]), "reading " + v.name,
             "outputs are computed from fmi3EnterInitializationMode on");
     }
-    checkCapacity();
     for (std::size_t i = 0; i < nvr; ++i)
     {
         for (const double x : output(variable(vr[i], couplingVariable::type::float64))) *values++ = x;
@@ -276,6 +275,7 @@ void fmuInstance::apply(const couplingVariable& v, const std::vector<double>& va
     else if (v.field == "pressure")
     {
         const std::size_t n = v.region == "fractures" ? fracturesFaces() : values.size();
+        if (n > values.size()) checkCapacity();
         solid_->setPressure(v.region, std::vector<double>(values.begin(), values.begin() + long(n)));
     }
     else if (v.field == "residualAperture" && !(values[0] > 0))
@@ -302,8 +302,8 @@ void fmuInstance::setFloat64
         if (!inputs_.count(vr[i]))
         {
             throw fmuError(v.name + " (value reference " + std::to_string(vr[i]) + ") is "
-                + (v.causality == "output" ? "an output" : "the " + v.causality)
-                + "; only inputs and parameters can be set");
+                + (v.causality == "output" ? "an output" : "not an input (causality "
+                + v.causality + ")") + "; only inputs and parameters can be set");
         }
     }
     for (std::size_t i = 0; i < n; ++i)
