@@ -14,20 +14,25 @@ pressure is small against E so that the faces, which the FMU gives where
 they are now, stay where the linear closed form has them. Sneddon,
 plane strain: w(s) = 4 p (1 - nu^2)/E sqrt(a^2 - s^2), here averaged over
 each segment as the FMU's displacement is (E = 1, nu = 0.15, a = 0.1 from
-the case). Writes postProcessing/sneddon/opening.dat and prints the
-profile, the error of the two central segments (the verification's w(0)
+the case). Writes postProcessing/sneddon/opening.dat and opening.png (the
+segments' openings over the closed form; needs python3-matplotlib) and
+prints the profile, the error of the two central segments (the verification's w(0)
 criterion is 2 %) and of the crack's opened area.
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 
 import math
+import os
 import sys
 from pathlib import Path
 
 import numpy as np
 
+# The importer sits beside the tutorials (or in the project's copy)
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+if os.environ.get("NMM_PROJECT_DIR"):
+    sys.path.append(os.path.join(os.environ["NMM_PROJECT_DIR"], "tutorials", "coupling"))
 import fmi3Master  # noqa: E402
 
 E, NU, A = 1.0, 0.15, 0.1
@@ -77,6 +82,24 @@ def run(path, p):
         fmu.remove()
 
 
+def plot(rows, p, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    s = np.linspace(-A, A, 401)
+    fig, ax = plt.subplots(figsize=(6, 3.5))
+    ax.plot(s/A, 4*p*(1 - NU**2)/E*np.sqrt(A*A - s*s), "k-", lw=1, label="Sneddon")
+    for si, l, w in rows:
+        ax.plot([(si - l/2)/A, (si + l/2)/A], [w, w], "C0-", lw=2,
+                label="through the FMU (per segment)" if si == rows[0][0] else None)
+    ax.set_xlabel("s/a")
+    ax.set_ylabel("opening [m]")
+    ax.set_title("crack opening, p = %g, E = %g, nu = %g" % (p, E, NU))
+    ax.legend(loc="lower center")
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
 def main():
     path = sys.argv[1]
     p = float(sys.argv[2]) if len(sys.argv) > 2 else 1e-4
@@ -94,6 +117,7 @@ def main():
     centre = max(abs(w/e - 1) for w, e in central)
     area = sum(l*w for s, l, w in rows)
     exactArea = math.pi*(1 - NU**2)*p*A*A*2/E
+    plot(rows, p, out/"opening.png")
     print("central segments: error %.2f %% (within 2 %% as the verification asks)"
           % (100*centre))
     print("opened area: %.6e, Sneddon %.6e, error %.2f %%"

@@ -25,10 +25,14 @@ SPDX-License-Identifier: GPL-3.0-or-later
 """
 
 import math
+import os
 import sys
 from pathlib import Path
 
+# The importer sits beside the tutorials (or in the project's copy)
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+if os.environ.get("NMM_PROJECT_DIR"):
+    sys.path.append(os.path.join(os.environ["NMM_PROJECT_DIR"], "tutorials", "coupling"))
 import fmi3Master  # noqa: E402
 
 E, NU, ALPHA, TREF = 50e9, 0.25, 8e-6, 293.15
