@@ -4,6 +4,7 @@
 #include "nmmSolid/io/dictionary/IOerror.H"
 #include "nmmSolid/io/dictionary/dictionary.H"
 #include "nmmSolid/io/dictionary/keywordTable.H"
+#include "nmmSolid/output/vtk/vtkXmlFile/vtkXmlFile.H"
 
 #include <algorithm>
 #include <cstdio>
@@ -122,24 +123,6 @@ const fieldSpec& findSpec(const specList& specs, const std::string& field, const
     if (!hint.empty()) msg += "; " + hint;
     throw e.error(msg + (valid.empty() ? std::string(" (it can " + std::string(what)
         + " nothing)") : " (it can " + std::string(what) + ":" + valid + ")"));
-}
-
-
-std::string xmlEscaped(const std::string& s)
-{
-    std::string out;
-    for (const char c : s)
-    {
-        switch (c)
-        {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    }
-    return out;
 }
 
 
@@ -400,7 +383,7 @@ void couplingVariables::writeModelDescription
 ) const
 {
     os << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-       << "<fmiModelDescription fmiVersion=\"3.0\" modelName=\"" << xmlEscaped(modelName_)
+       << "<fmiModelDescription fmiVersion=\"3.0\" modelName=\"" << xmlEscape(modelName_)
        << "\" instantiationToken=\"" << instantiationToken()
        << "\" description=\"nmmSolid: Numerical Manifold Method solid, coupled through"
           " system/couplingDict\" generationTool=\"nmmFmuExport " << versionString
@@ -432,7 +415,7 @@ void couplingVariables::writeModelDescription
            << v.variability << "\"";
         if (!v.unit.empty()) os << " unit=\"" << v.unit << "\"";
         if (!v.start.empty()) os << " start=\"" << startText(v.start) << "\"";
-        os << " description=\"" << xmlEscaped(v.description) << "\"";
+        os << " description=\"" << xmlEscape(v.description) << "\"";
         if (!v.isArray())
         {
             os << "/>\n";
