@@ -184,6 +184,8 @@ TEST(couplingVariables, aWrongDictionaryIsAnErrorAtItsLine)
     EXPECT_NE(with(" maxFaces 50;", "").find("regions/fractures"), std::string::npos);
     EXPECT_EQ(with("residualAperture 1e-6;", "").rfind("1: Required keyword 'residualAperture'",
         0), 0u);
+    EXPECT_EQ(with("write (displacement)", "write (displacement displacement)"),
+        "5: region 'top': 'displacement' is listed twice");
     EXPECT_EQ(with("maxFaces 50", "maxFaces 0"), "6: value 0 is out of range >= 1 (fractures"
         " only: the length of its arrays (the most contacts the region may have))");
 }

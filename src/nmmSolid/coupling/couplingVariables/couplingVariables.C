@@ -107,6 +107,23 @@ const specList& writable(const std::string& kind)
 }
 
 
+//- message, a "did you mean" for word, and the candidates ("<what>: a b")
+std::string unknown
+(
+    const std::string& message,
+    const std::string& word,
+    const std::vector<std::string>& candidates,
+    const std::string& what
+)
+{
+    const std::string hint = didYouMean(word, candidates);
+    std::string list;
+    for (const auto& c : candidates) list += " " + c;
+    return message + (hint.empty() ? "" : "; " + hint) + " (" + what
+        + (list.empty() ? " nothing" : ":" + list) + ")";
+}
+
+
 const fieldSpec& findSpec(const specList& specs, const std::string& field, const entry& e,
     const std::string& region, const char* what)
 {
@@ -116,13 +133,8 @@ const fieldSpec& findSpec(const specList& specs, const std::string& field, const
         if (field == s.name) return s;
         names.push_back(s.name);
     }
-    std::string valid;
-    for (const auto& n : names) valid += " " + n;
-    std::string msg = "region '" + region + "' cannot " + what + " '" + field + "'";
-    const std::string hint = didYouMean(field, names);
-    if (!hint.empty()) msg += "; " + hint;
-    throw e.error(msg + (valid.empty() ? std::string(" (it can " + std::string(what)
-        + " nothing)") : " (it can " + std::string(what) + ":" + valid + ")"));
+    throw e.error(unknown("region '" + region + "' cannot " + what + " '" + field + "'",
+        field, names, std::string("it can ") + what));
 }
 
 
@@ -133,6 +145,7 @@ std::string startText(const std::vector<double>& values)
     for (std::size_t i = 0; i < values.size(); ++i) os << (i ? " " : "") << values[i];
     return os.str();
 }
+
 
 //- The keyword giving the capacity of a region whose faces come and go
 const char* capacityKeyword(const std::string& r)
@@ -254,6 +267,7 @@ void couplingVariables::addRegion
         {
             const fieldSpec& f = findSpec(*specs, name, e, r, key);
             couplingVariable v = field(f, causality);
+            if (find(v.name)) throw e.error("region '" + r + "': '" + name + "' is listed twice");
             if (std::string(causality) == "input")
             {
                 v.start = f.name == std::string("temperature") ? solid.referenceTemperatures()
@@ -295,12 +309,8 @@ couplingVariables::couplingVariables
         const entry& e = regions.lookupEntry(r);
         if (std::find(known.begin(), known.end(), r) == known.end())
         {
-            std::string valid;
-            for (const auto& n : known) valid += " " + n;
-            std::string msg = "unknown coupling region '" + r + "'";
-            const std::string hint = didYouMean(r, known);
-            if (!hint.empty()) msg += "; " + hint;
-            throw e.error(msg + " (regions of this case:" + valid + ")");
+            throw e.error(unknown("unknown coupling region '" + r + "'", r, known,
+                "regions of this case"));
         }
         if (!regions.isDict(r)) throw e.error("region '" + r + "': expected a dictionary");
         addRegion(r, regions.subDict(r), solid);
