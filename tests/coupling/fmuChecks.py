@@ -15,7 +15,7 @@ class run:
         if len(sys.argv) != 5:
             print(doc)
             raise SystemExit(1)
-        self.fmus, self.project, self.bin, self.work = (Path(a) for a in sys.argv[1:])
+        self.fmus, self.project, self.bin, self.work = (Path(a).resolve() for a in sys.argv[1:])
         self.work.mkdir(parents=True, exist_ok=True)
         sys.path.insert(0, str(self.project/"tutorials"/"coupling"))
         self.failures = []

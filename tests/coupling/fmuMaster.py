@@ -22,7 +22,9 @@ binaries/x86_64-linux/<modelIdentifier>.so by name, call the sequence):
        stress, the paper's Eq. 8), to 1e-5;
      - rolled back with fmi3SetFMUState: the time, the outputs and the
        inputs are those of the saved state, and the step repeated with the
-       same pressure gives the same outputs bit for bit.
+       same pressure gives the same outputs bit for bit;
+     - the VTK frames its couplingDict asks for are at t = 0, 1, 2 and 3,
+       the repeated step's in place of the first.
 3. Wrong calls on thermalBlocks.fmu, each an error status with a logged
    message that says what was wrong, never a crash: a wrong
    instantiationToken or resource path, calls out of order, an unknown
@@ -37,7 +39,10 @@ SPDX-License-Identifier: GPL-3.0-or-later
 """
 
 import ctypes as C
+import json
 import math
+import os
+import shutil
 import sys
 import xml.etree.ElementTree as ET
 from pathlib import Path
@@ -139,6 +144,14 @@ def sequence(t, fmi3Master, fmu):
     solid.terminate()
     solid.free()
 
+    # vtkDirectory "VTK": a frame at the start and after every step, the
+    # repeated step's replacing the first
+    series = json.loads((t.work/"VTK"/"fractureFlow.vtu.series").read_text())
+    times = [f["time"] for f in series["files"]]
+    t.check(times == [0, 1, 2, 3], "VTK frames at t = %s" % times)
+    t.check(all((t.work/"VTK"/f["name"]).is_file() for f in series["files"]),
+            "every frame of the series exists")
+
 
 def expectError(t, solid, what, phrase, function, *args):
     before = len(solid.messages)
@@ -218,6 +231,9 @@ def wrongCalls(t, fmi3Master, fmu):
 def main():
     t = fmuChecks.run(__doc__)
     import fmi3Master
+    # The FMU writes its VTK frames relative to the working directory
+    os.chdir(t.work)
+    shutil.rmtree(t.work/"VTK", ignore_errors=True)
     fracture = fmi3Master.fmu(t.fmus/"fractureFlow.fmu", t.work/"fractureFlow")
     modelDescription(t, fmi3Master, fracture)
     sequence(t, fmi3Master, fracture)

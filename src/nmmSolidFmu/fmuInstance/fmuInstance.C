@@ -1,6 +1,7 @@
 #include "nmmSolidFmu/fmuInstance/fmuInstance.H"
 
 #include "nmmSolid/io/case/caseFolder/caseFolder.H"
+#include "nmmSolid/output/solidOutput/solidOutput.H"
 #include "nmmSolid/solver/stepController/stepController.H"
 
 #include <algorithm>
@@ -70,6 +71,7 @@ fmuInstance::fmuInstance(const std::filesystem::path& resourcePath, const std::s
 
 void fmuInstance::load()
 {
+    vtk_.reset();
     solid_.reset();
     model_ = nmmSolidModel::New(caseFolder(resources_));
     solid_ = std::make_unique<couplingInterface>(*model_);
@@ -117,6 +119,12 @@ void fmuInstance::exitInitializationMode()
 {
     require(mode_ == mode::initialization, "leaving initialization",
         "call fmi3EnterInitializationMode first");
+    if (!variables_->vtkDirectory().empty())
+    {
+        vtk_ = std::make_unique<vtkWriter>(variables_->vtkDirectory(), variables_->modelName(),
+            solid_->time(), vtkFormat::binary);
+        writeFrame();
+    }
     mode_ = mode::step;
 }
 
@@ -419,6 +427,19 @@ void fmuInstance::doStep(double t, double h)
         }
         solid_->acceptStep();
         checkCapacity();
+    }
+    writeFrame();
+}
+
+
+void fmuInstance::writeFrame()
+{
+    if (!vtk_) return;
+    const long long index = model_->state().timeIndex;
+    vtk_->write(solidOutput::frame(*model_), index, solid_->time());
+    if (model_->contacts())
+    {
+        vtk_->writeContacts(solidOutput::contactFrame(*model_), index, solid_->time());
     }
 }
 

@@ -34,6 +34,8 @@ const keywordTable& couplingVariables::dictKeywords()
         t.subDict("regions", "per region: the fields read and written").required();
         t.scalar("residualAperture", "smallest aperture given for a closed contact",
             "m").above(0);
+        t.string("vtkDirectory", "an FMU writes the solid's VTK frames here after every"
+            " step (relative: to the importer's working directory); none if absent");
         return t;
     }();
     return table;
@@ -290,6 +292,10 @@ couplingVariables::couplingVariables
     const dictionary d = dictionary::read(couplingDict, ro);
     dictKeywords().validate(d);
     modelName_ = dictKeywords().get<std::string>(d, "modelName");
+    if (d.findEntry("vtkDirectory"))
+    {
+        vtkDirectory_ = dictKeywords().get<std::string>(d, "vtkDirectory");
+    }
 
     couplingVariable time;
     time.name = "time";
