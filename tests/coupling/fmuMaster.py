@@ -112,7 +112,11 @@ def sequence(t, fmi3Master, fmu):
     closed = jump[:n] <= 0
     t.check(closed.any() and np.all(aperture[:n][closed] == residual),
             "%d closed contacts, at the residual aperture %g" % (closed.sum(), residual))
-    t.check(not aperture[n:].any() and not jump[n:].any()
+    bodies = solid.get("fractures.bodies")
+    t.check(all(sorted(b) == [0, 1] for b in bodies[:n].tolist()),
+            "every contact separates the lower block (0) from the upper (1)")
+    t.check(solid.get("top.bodies").tolist() == [[1, 1]], "the top's face is the upper block's")
+    t.check(not aperture[n:].any() and not jump[n:].any() and not bodies[n:].any()
             and not solid.get("fractures.contactTraction")[n:].any(),
             "the arrays are zero beyond fractures.nFaces")
 

@@ -94,11 +94,11 @@ TEST(couplingVariables, followTheDictionaryInOrderWithTheirSizesAndUnits)
     const std::vector<std::string> names
     {
         "time",
-        "top.nFaces", "top.midpoint", "top.normal", "top.length", "top.pressure",
-        "top.displacement",
+        "top.nFaces", "top.midpoint", "top.normal", "top.length", "top.bodies",
+        "top.pressure", "top.displacement",
         "fractures.capacity", "fractures.nFaces", "fractures.topologyRevision",
-        "fractures.midpoint", "fractures.normal", "fractures.length", "fractures.pressure",
-        "fractures.aperture", "fractures.contactTraction",
+        "fractures.midpoint", "fractures.normal", "fractures.length", "fractures.bodies",
+        "fractures.pressure", "fractures.aperture", "fractures.contactTraction",
         "blocks.nBlocks", "blocks.temperature", "blocks.stress",
         "fractures.residualAperture"
     };
@@ -127,6 +127,8 @@ TEST(couplingVariables, followTheDictionaryInOrderWithTheirSizesAndUnits)
     EXPECT_EQ(vars.find("blocks.temperature")->unit, "K");
     EXPECT_EQ(vars.find("fractures.capacity")->causality, "structuralParameter");
     EXPECT_EQ(vars.find("fractures.nFaces")->kind, nmm::couplingVariable::type::uint64);
+    EXPECT_EQ(vars.find("fractures.bodies")->kind, nmm::couplingVariable::type::uint64);
+    EXPECT_EQ(size("fractures.bodies"), 100u);
     EXPECT_EQ(vars.find("fractures.residualAperture")->start, std::vector<double>{1e-6});
     EXPECT_EQ(vars.capacity("fractures"), 50u);
     EXPECT_EQ(vars.capacity("pores"), 0u);
@@ -149,8 +151,8 @@ TEST(couplingVariables, theModelDescriptionListsEveryVariableAndTheTokenFollowsT
         EXPECT_NE(xml.find("name=\"" + v.name + "\" valueReference=\""
             + std::to_string(v.valueReference) + "\""), std::string::npos) << v.name;
     }
-    // The capacity (value reference 7) sizes the fracture arrays
-    EXPECT_NE(xml.find("<Dimension valueReference=\"7\"/>"), std::string::npos);
+    // The capacity (value reference 8) sizes the fracture arrays
+    EXPECT_NE(xml.find("<Dimension valueReference=\"8\"/>"), std::string::npos);
 
     // The same dictionary gives the same token; another capacity another
     EXPECT_EQ(read(*twoBlocks(fullDict)).instantiationToken(), vars.instantiationToken());
@@ -170,7 +172,7 @@ TEST(couplingVariables, aWrongDictionaryIsAnErrorAtItsLine)
     };
     // Line 1 is the FoamFile header
     EXPECT_EQ(with("modelName", "modelname"), "2: Unknown keyword 'modelname' in couplingDict;"
-        " did you mean 'modelName'?\nValid keywords: modelName regions residualAperture");
+        " did you mean 'modelName'?\nValid keywords: modelName regions residualAperture vtkDirectory");
     EXPECT_NE(with("    top {", "    tpo {").find("5: unknown coupling region 'tpo'; did you"
         " mean 'top'?"), std::string::npos);
     EXPECT_NE(with("(pressure); write (displacement)", "(presure); write (displacement)")

@@ -360,16 +360,34 @@ void fmuInstance::getUInt64
     for (std::size_t i = 0; i < nvr; ++i)
     {
         const auto& v = variable(vr[i], couplingVariable::type::uint64);
-        if (v.causality == "structuralParameter") values[i] = std::uint64_t(v.start[0]);
+        require(mode_ != mode::instantiated || v.causality == "structuralParameter",
+            "reading " + v.name, "outputs are computed from fmi3EnterInitializationMode on");
+    }
+    for (std::size_t i = 0; i < nvr; ++i)
+    {
+        const auto& v = variable(vr[i], couplingVariable::type::uint64);
+        if (v.causality == "structuralParameter") *values++ = std::uint64_t(v.start[0]);
+        else if (v.field == "bodies") values = bodies(v, values);
         else
         {
-            require(mode_ != mode::instantiated, "reading " + v.name,
-                "outputs are computed from fmi3EnterInitializationMode on");
-            values[i] = v.field == "nFaces" ? fracturesFaces()
+            *values++ = v.field == "nFaces" ? fracturesFaces()
                 : v.field == "nPores" ? solid_->pores().pores.size()
                 : std::uint64_t(solid_->topologyRevision());
         }
     }
+}
+
+
+std::uint64_t* fmuInstance::bodies(const couplingVariable& v, std::uint64_t* values) const
+{
+    const std::size_t rows = variables_->size(v)/2;
+    const auto faces = solid_->faces(v.region);
+    for (std::size_t i = 0; i < rows; ++i)
+    {
+        *values++ = i < faces.size() ? faces[i].block : 0;
+        *values++ = i < faces.size() ? faces[i].otherBlock : 0;
+    }
+    return values;
 }
 
 

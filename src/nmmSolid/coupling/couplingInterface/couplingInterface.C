@@ -129,6 +129,7 @@ std::vector<couplingInterface::face> couplingInterface::faces(const std::string&
             f.length += l;
             f.block = model_.elements().elements()[s.element].block;
         }
+        f.otherBlock = f.block;
         if (f.length > 0) f.midpoint /= f.length;
         if (normal.norm() > 0) f.normal = normal.normalized();
         result.push_back(f);

@@ -260,6 +260,11 @@ void couplingVariables::addRegion
         add(field({"midpoint", "m", 2, "midpoint of the face, where it is now"}, "output"));
         add(field({"normal", "", 2, "outward unit normal of the face"}, "output"));
         add(field({"length", "m", 1, "length of the face"}, "output"));
+        couplingVariable bodies = field({"bodies", "", 2, "the blocks (from 0, in"
+            " nmmMeshDict's order) the face separates: its own, and a contact's other"
+            " (a patch face: its own again)"}, "output");
+        bodies.kind = couplingVariable::type::uint64;
+        add(bodies);
     }
     for (const auto& [key, specs, causality] :
         {std::tuple{"read", &readable(r), "input"}, std::tuple{"write", &writable(r), "output"}})
