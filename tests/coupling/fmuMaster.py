@@ -32,7 +32,11 @@ binaries/x86_64-linux/<modelIdentifier>.so by name, call the sequence):
    temperatures, setting an output or a structural parameter, a type the
    FMU has no variables of, a step from the wrong time or of zero length,
    and calls after fmi3Terminate. None changes anything: the instance
-   then expands by the closed form's (1 + nu) alpha dT.
+   then expands by the closed form's (1 + nu) alpha dT. fmi3Reset takes
+   it back to the start.
+4. Two instances of thermalBlocks.fmu at once, each heated by its own dT,
+   each expand by their own closed form; fmi3GetFMUState on a state it
+   gave before overwrites it.
 Exit 1 when a check fails.
 
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -229,7 +233,37 @@ def wrongCalls(t, fmi3Master, fmu):
                 "SetFloat64", one("blocks.temperature"), 1, two(300.0, 300.0), 2)
     expectError(t, s, "a step after fmi3Terminate", "a step is not allowed in terminated mode",
                 *step(1.0, 1.0))
+    s.check("Reset")
+    s.enterInitializationMode(0.0)
+    s.exitInitializationMode()
+    t.check(s.get("time") == 0.0 and np.all(s.get("blocks.temperature") == 293.15),
+            "fmi3Reset: back at t = 0 and Tref, and it steps again")
     s.free()
+
+
+def twoInstances(t, fmi3Master, fmu):
+    """Instances share nothing: each its own temperature and result; a state
+    given to fmi3GetFMUState again is overwritten with the present one"""
+    a, b = fmu.instantiate("a"), fmu.instantiate("b")
+    for s in (a, b):
+        s.enterInitializationMode(0.0)
+        s.exitInitializationMode()
+    state = a.getState()
+    for s, dT in ((a, 10.0), (b, 40.0)):
+        s.set("blocks.temperature", [293.15 + dT]*2)
+    for s in (a, b):
+        s.doStep(0.0, 1.0)
+    ux = [s.get("freeRight.displacement")[0][0] for s in (a, b)]
+    eps = 1.25*8e-6
+    t.close(1e-9, ux[0], eps*10, eps*10, "instance a: its own expansion")
+    t.close(1e-9, ux[1], eps*40, eps*40, "instance b: its own expansion")
+    a.check("GetFMUState", C.byref(state))      # overwrite: the state at t = 1
+    a.doStep(1.0, 1.0)
+    a.setState(state)
+    t.check(a.get("time") == 1.0, "fmi3GetFMUState on a given state overwrote it (t = 1)")
+    a.freeState(state)
+    for s in (a, b):
+        s.free()
 
 
 def main():
@@ -241,7 +275,9 @@ def main():
     fracture = fmi3Master.fmu(t.fmus/"fractureFlow.fmu", t.work/"fractureFlow")
     modelDescription(t, fmi3Master, fracture)
     sequence(t, fmi3Master, fracture)
-    wrongCalls(t, fmi3Master, fmi3Master.fmu(t.fmus/"thermalBlocks.fmu", t.work/"thermalBlocks"))
+    thermal = fmi3Master.fmu(t.fmus/"thermalBlocks.fmu", t.work/"thermalBlocks")
+    wrongCalls(t, fmi3Master, thermal)
+    twoInstances(t, fmi3Master, thermal)
     return t.end()
 
 
