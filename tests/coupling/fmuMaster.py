@@ -236,8 +236,13 @@ def wrongCalls(t, fmi3Master, fmu):
     s.check("Reset")
     s.enterInitializationMode(0.0)
     s.exitInitializationMode()
-    t.check(s.get("time") == 0.0 and np.all(s.get("blocks.temperature") == 293.15),
-            "fmi3Reset: back at t = 0 and Tref, and it steps again")
+    t.check(s.get("time") == 0.0 and np.all(s.get("blocks.temperature") == 293.15)
+            and s.get("freeRight.displacement")[0][0] == 0.0,
+            "fmi3Reset: back at t = 0, at Tref and undeformed")
+    s.set("blocks.temperature", [343.15, 343.15])
+    status, last = s.doStep(0.0, 1.0)
+    t.close(1e-9, s.get("freeRight.displacement")[0][0], eps, eps,
+            "after fmi3Reset the free block expands again")
     s.free()
 
 
