@@ -162,9 +162,7 @@ void couplingInterface::setPressure(const std::string& region, const std::vector
     checkValues(region, p);
     if (isFractures(region))
     {
-        std::map<std::tuple<int, int, int, int>, double> byContact;
-        for (std::size_t i = 0; i < p.size(); ++i) byContact[contacts()[i].key()] = p[i];
-        model_.setContactPressure(std::move(byContact));
+        setContactPressure(located(contacts()), p);
         return;
     }
     pressure_[region] = p;
@@ -335,7 +333,43 @@ void couplingInterface::acceptStep()
     {
         changed = before[i].key() != upcoming_[i].key();
     }
-    if (changed) ++revision_;
+    if (!changed) return;
+    ++revision_;
+    if (!pressured_.empty())
+    {
+        const std::vector<locatedContact> now = located(upcoming_);
+        setContactPressure(now, carriedPressure(pressured_, contactPressure_, now));
+    }
+}
+
+
+std::vector<locatedContact> couplingInterface::located(const std::vector<contactRecord>& records) const
+{
+    const auto& loops = model_.contacts()->boundaries().loops();
+    std::vector<locatedContact> result;
+    for (const contactRecord& r : records)
+    {
+        locatedContact c;
+        c.key = r.key();
+        c.point = r.point;
+        c.bodies = {loops[std::size_t(r.edgeLoop)].block, loops[std::size_t(r.vertexLoop)].block};
+        result.push_back(c);
+    }
+    return result;
+}
+
+
+void couplingInterface::setContactPressure
+(
+    const std::vector<locatedContact>& contacts,
+    const std::vector<double>& p
+)
+{
+    std::map<std::tuple<int, int, int, int>, double> byContact;
+    for (std::size_t i = 0; i < p.size(); ++i) byContact[contacts[i].key] = p[i];
+    model_.setContactPressure(std::move(byContact));
+    pressured_ = contacts;
+    contactPressure_ = p;
 }
 
 
