@@ -22,7 +22,16 @@ pressure):
     segments through the FMU (0.8 %);
   - packed as an FMU too and stepped without a pressure from the importer,
     every segment's opening equals the one through the interface to 1e-9
-    of the largest.
+    of the largest;
+and, coupled implicitly to a compressible fluid that fills the crack
+(tutorials/coupling/sneddonCrack/fluidCrackMaster.py: each iteration
+restores the saved state, sets the pressure, steps and reads the volume
+back; secant updates):
+  - the loop converges to a residual below 1e-10 of p in at most 10
+    iterations;
+  - p and the crack's volume are within 3 % of the hand solution of
+    C p^2 + K C p - K V0 = 0 (C Sneddon's compliance), the tolerance of
+    the opened area above, on which they depend.
 Exit 1 when a check fails.
 
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -87,6 +96,14 @@ def main():
     diff = max(abs(a[2] - b[2]) for a, b in zip(rows, direct)) if len(direct) == len(rows) else math.inf
     t.check(diff <= 1e-9*largest, "through the interface = the direct load: largest"
             " difference %.2e of the largest opening" % (diff/largest))
+
+    import fluidCrackMaster as fc
+    p, V, iterations, r = fc.couple(t.fmus/"sneddonCrack.fmu", log=lambda line: None)
+    pHand, VHand = fc.handSolution()
+    t.check(iterations <= 10 and r < 1e-10, "the fluid-filled crack's implicit loop"
+            " converged in %d iterations (residual %.1e of p)" % (iterations, r))
+    t.close(0.03, p, pHand, pHand, "the fluid-filled crack's pressure")
+    t.close(0.03, V, VHand, VHand, "the fluid-filled crack's volume")
     return t.end()
 
 
