@@ -17,6 +17,11 @@ install(TARGETS nmmSolid
     RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}"
     INCLUDES DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
 
+# The FMU binary, where nmmFmuExport (in bin/) looks for it
+if(TARGET nmmSolidFmi3)
+    install(TARGETS nmmSolidFmi3 LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}")
+endif()
+
 # Headers keep their layout: src/nmmSolid/io/dictionary/dictionary.H ->
 # <prefix>/include/nmmSolid/io/dictionary/dictionary.H
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/src/nmmSolid/"

@@ -18,8 +18,8 @@ Description
 Usage
     nmmFmuExport [-case <dir>] [-o <file.fmu>] [-binary <nmmSolidFmi3.so>]
     -o          the FMU (default: <case>/<modelName>.fmu)
-    -binary     the FMU binary (default: lib/nmmSolidFmi3.so of the
-                project, beside bin/)
+    -binary     the FMU binary (default: nmmSolidFmi3.so in lib/ beside
+                bin/, of the project or of the install prefix)
 \*---------------------------------------------------------------------------*/
 
 #include "nmmSolid/coupling/couplingVariables/couplingVariables.H"
@@ -42,10 +42,15 @@ namespace
 const char* const modelIdentifier = "nmmSolid";
 
 
+//- Beside bin/: lib/ of the project (Allwmake) or of the install prefix
 fs::path defaultBinary()
 {
-    const fs::path exe = fs::read_symlink("/proc/self/exe");
-    return exe.parent_path().parent_path()/"lib"/"nmmSolidFmi3.so";
+    const fs::path top = fs::read_symlink("/proc/self/exe").parent_path().parent_path();
+    for (const fs::path& lib : {fs::path("lib"), fs::path(NMM_INSTALL_LIBDIR)})
+    {
+        if (fs::is_regular_file(top/lib/"nmmSolidFmi3.so")) return top/lib/"nmmSolidFmi3.so";
+    }
+    return top/"lib"/"nmmSolidFmi3.so";
 }
 
 
