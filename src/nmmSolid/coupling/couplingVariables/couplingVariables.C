@@ -149,6 +149,31 @@ std::string startText(const std::vector<double>& values)
 }
 
 
+//- One variable's element of modelDescription.xml
+void writeVariable(std::ostream& os, const couplingVariable& v)
+{
+    const char* type = v.kind == couplingVariable::type::uint64 ? "UInt64" : "Float64";
+    os << "    <" << type << " name=\"" << v.name << "\" valueReference=\""
+       << v.valueReference << "\" causality=\"" << v.causality << "\" variability=\""
+       << v.variability << "\"";
+    if (!v.unit.empty()) os << " unit=\"" << v.unit << "\"";
+    if (!v.start.empty()) os << " start=\"" << startText(v.start) << "\"";
+    os << " description=\"" << xmlEscape(v.description) << "\"";
+    if (!v.isArray())
+    {
+        os << "/>\n";
+        return;
+    }
+    os << ">\n";
+    for (const auto ref : v.sizeReferences)
+    {
+        os << "      <Dimension valueReference=\"" << ref << "\"/>\n";
+    }
+    for (const auto size : v.fixedSizes) os << "      <Dimension start=\"" << size << "\"/>\n";
+    os << "    </" << type << ">\n";
+}
+
+
 //- The keyword giving the capacity of a region whose faces come and go
 const char* capacityKeyword(const std::string& r)
 {
@@ -428,38 +453,15 @@ void couplingVariables::writeModelDescription
           "  </LogCategories>\n"
        << "  <DefaultExperiment startTime=\"0\" stepSize=\"1\"/>\n"
        << "  <ModelVariables>\n";
-    for (const auto& v : variables_)
-    {
-        const char* type = v.kind == couplingVariable::type::uint64 ? "UInt64" : "Float64";
-        os << "    <" << type << " name=\"" << v.name << "\" valueReference=\""
-           << v.valueReference << "\" causality=\"" << v.causality << "\" variability=\""
-           << v.variability << "\"";
-        if (!v.unit.empty()) os << " unit=\"" << v.unit << "\"";
-        if (!v.start.empty()) os << " start=\"" << startText(v.start) << "\"";
-        os << " description=\"" << xmlEscape(v.description) << "\"";
-        if (!v.isArray())
-        {
-            os << "/>\n";
-            continue;
-        }
-        os << ">\n";
-        for (const auto ref : v.sizeReferences)
-        {
-            os << "      <Dimension valueReference=\"" << ref << "\"/>\n";
-        }
-        for (const auto s : v.fixedSizes) os << "      <Dimension start=\"" << s << "\"/>\n";
-        os << "    </" << type << ">\n";
-    }
+    for (const auto& v : variables_) writeVariable(os, v);
     os << "  </ModelVariables>\n  <ModelStructure>\n";
-    for (const auto& v : variables_)
+    // Every output is computed from initialization on
+    for (const char* element : {"Output", "InitialUnknown"})
     {
-        if (v.causality == "output") os << "    <Output valueReference=\"" << v.valueReference << "\"/>\n";
-    }
-    for (const auto& v : variables_)
-    {
-        if (v.causality == "output")
+        for (const auto& v : variables_)
         {
-            os << "    <InitialUnknown valueReference=\"" << v.valueReference << "\"/>\n";
+            if (v.causality != "output") continue;
+            os << "    <" << element << " valueReference=\"" << v.valueReference << "\"/>\n";
         }
     }
     os << "  </ModelStructure>\n</fmiModelDescription>\n";
