@@ -37,6 +37,9 @@ binaries/x86_64-linux/<modelIdentifier>.so by name, call the sequence):
 4. Two instances of thermalBlocks.fmu at once, each heated by its own dT,
    each expand by their own closed form; fmi3GetFMUState on a state it
    gave before overwrites it.
+5. A dynamic case (tutorials/verification/freeFall, packed here): two
+   communication steps, each the solid's own steps, fall by -g t^2/2 to
+   1e-10 (DDA with the velocity carried over is exact for a free fall).
 Exit 1 when a check fails.
 
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -47,6 +50,7 @@ import json
 import math
 import os
 import shutil
+import subprocess
 import sys
 import xml.etree.ElementTree as ET
 from pathlib import Path
@@ -271,6 +275,36 @@ def twoInstances(t, fmi3Master, fmu):
         s.free()
 
 
+def freeFall(t, fmi3Master):
+    """A dynamic case: tutorials/verification/freeFall with a patch on its
+    bottom edge, packed with nmmFmuExport here; two communication steps of
+    0.05 s, each the solid's own steps"""
+    case = t.work/"freeFall"
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(t.project/"tutorials/verification/freeFall", case,
+                    ignore=shutil.ignore_patterns("VTK", "log.*", "[1-9]*", "0.*"))
+    edit = lambda f, a, b: (case/f).write_text((case/f).read_text().replace(a, b))  # noqa: E731
+    edit("system/nmmMeshDict", "patches\n{\n}",
+         "patches\n{\n    bottom { type box; min (-1 -1e-9); max (2 1e-9); }\n}")
+    edit("0/D", "    // No patch: every edge is traction free\n", "    bottom { type"
+         " tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }\n")
+    (case/"system/couplingDict").write_text(
+        "FoamFile { version 2.0; format ascii; class dictionary; object couplingDict; }\n"
+        "modelName freeFall;\nregions { bottom { read (); write (displacement); } }\n")
+    with open(case/"log.nmmFmuExport", "w") as log:
+        subprocess.run([str(t.bin/"nmmFmuExport"), "-case", str(case)], stdout=log,
+                       stderr=subprocess.STDOUT, check=True)
+    solid = fmi3Master.fmu(case/"freeFall.fmu", t.work/"freeFallFmu").instantiate("fall")
+    solid.enterInitializationMode(0.0)
+    solid.exitInitializationMode()
+    for k in (1, 2):
+        status, last = solid.doStep(0.05*(k - 1), 0.05)
+        y = -9.81*(0.05*k)**2/2
+        t.close(1e-10, solid.get("bottom.displacement")[0][1], y, abs(y),
+                "free fall through the FMU at t = %g (-g t^2/2)" % last)
+    solid.free()
+
+
 def main():
     t = fmuChecks.run(__doc__)
     import fmi3Master
@@ -283,6 +317,7 @@ def main():
     thermal = fmi3Master.fmu(t.fmus/"thermalBlocks.fmu", t.work/"thermalBlocks")
     wrongCalls(t, fmi3Master, thermal)
     twoInstances(t, fmi3Master, thermal)
+    freeFall(t, fmi3Master)
     return t.end()
 
 
