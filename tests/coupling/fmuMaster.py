@@ -104,9 +104,7 @@ def contacts(solid):
 
 
 def sequence(t, fmi3Master, fmu):
-    solid = fmu.instantiate("fracture")
-    solid.enterInitializationMode(0.0)
-    solid.exitInitializationMode()
+    solid = fmu.initialized("fracture")
     capacity = int(solid.get("fractures.capacity"))
     for k in range(2):
         status, last = solid.doStep(float(k), 1.0)
@@ -253,10 +251,7 @@ def wrongCalls(t, fmi3Master, fmu):
 def twoInstances(t, fmi3Master, fmu):
     """Instances share nothing: each its own temperature and result; a state
     given to fmi3GetFMUState again is overwritten with the present one"""
-    a, b = fmu.instantiate("a"), fmu.instantiate("b")
-    for s in (a, b):
-        s.enterInitializationMode(0.0)
-        s.exitInitializationMode()
+    a, b = fmu.initialized("a"), fmu.initialized("b")
     state = a.getState()
     for s, dT in ((a, 10.0), (b, 40.0)):
         s.set("blocks.temperature", [293.15 + dT]*2)
@@ -294,9 +289,7 @@ def freeFall(t, fmi3Master):
     with open(case/"log.nmmFmuExport", "w") as log:
         subprocess.run([str(t.bin/"nmmFmuExport"), "-case", str(case)], stdout=log,
                        stderr=subprocess.STDOUT, check=True)
-    solid = fmi3Master.fmu(case/"freeFall.fmu", t.work/"freeFallFmu").instantiate("fall")
-    solid.enterInitializationMode(0.0)
-    solid.exitInitializationMode()
+    solid = fmi3Master.fmu(case/"freeFall.fmu", t.work/"freeFallFmu").initialized("fall")
     for k in (1, 2):
         status, last = solid.doStep(0.05*(k - 1), 0.05)
         y = -9.81*(0.05*k)**2/2

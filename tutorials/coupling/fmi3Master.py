@@ -113,6 +113,13 @@ class fmu:
                         str(self.dir / "resources") + "/" if resources is None
                         else resources)
 
+    def initialized(self, name="solid", startTime=0.0):
+        """An instance through initialization, ready for its first step"""
+        solid = self.instantiate(name)
+        solid.enterInitializationMode(startTime)
+        solid.exitInitializationMode()
+        return solid
+
     def remove(self):
         shutil.rmtree(self.dir, ignore_errors=True)
 

@@ -51,9 +51,7 @@ def couple(path, log=print):
     """The converged (p, V) and the iterations it took"""
     fmu = fmi3Master.fmu(path)
     try:
-        solid = fmu.instantiate("fluidCrack")
-        solid.enterInitializationMode(0.0)
-        solid.exitInitializationMode()
+        solid = fmu.initialized("fluidCrack")
         saved = solid.getState()
 
         def volume(p):

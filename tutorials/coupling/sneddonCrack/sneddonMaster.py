@@ -67,9 +67,7 @@ def openings(solid):
 def run(path, p):
     fmu = fmi3Master.fmu(path)
     try:
-        solid = fmu.instantiate("sneddon")
-        solid.enterInitializationMode(0.0)
-        solid.exitInitializationMode()
+        solid = fmu.initialized("sneddon")
         solid.set("crack.pressure", p)
         status, t = solid.doStep(0.0, 1.0)
         if status != fmi3Master.OK:

@@ -88,9 +88,7 @@ def main():
     dT = float(sys.argv[2]) if len(sys.argv) > 2 else 50.0
     fmu = fmi3Master.fmu(path)
     try:
-        solid = fmu.instantiate("thermal")
-        solid.enterInitializationMode(0.0)
-        solid.exitInitializationMode()
+        solid = fmu.initialized("thermal")
         start = solid.getState()
         report(heat(solid, 0.0, dT), dT)
         solid.setState(start)
