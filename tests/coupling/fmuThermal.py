@@ -20,7 +20,10 @@ or of the free expansion (displacements):
     both blocks' outer areas.
 The state before the step is restored with fmi3SetFMUState and the step
 repeated at 2 dT: every output doubles, to the same tolerance. A last
-step back to Tref returns every output to zero.
+step back to Tref returns every output to zero. Then, from the start
+again, a pressure in the pore (pores.pressure) grows it and pushes the
+free block's right face out, twice the pressure twice as far (the unit test couplingInterface.aPorePressure...
+checks that it acts as a patch pressure on the hole's edges would).
 Exit 1 when a check fails.
 
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -76,6 +79,18 @@ def main():
     t.check(solid.get("time") == 0.0, "fmi3SetFMUState takes the time back to 0")
     checkStep(t, tm, tm.heat(solid, 0.0, 2*dT), 2*dT, 2*dT)
     checkStep(t, tm, tm.heat(solid, 1.0, 0.0), 0.0, 2*dT)
+    # A pressure in the pore pushes its walls out, linearly (small
+    # displacements): twice the pressure moves the free faces twice as far
+    grow, ux = [], []
+    for p in (1e6, 2e6):
+        solid.setState(start)
+        solid.set("pores.pressure", [p] + [0.0]*(int(solid.get("pores.capacity")) - 1))
+        solid.doStep(0.0, 1.0)
+        grow.append(solid.get("pores.area")[0] - tm.HOLE)
+        ux.append(solid.get("freeRight.displacement")[0][0])
+    t.check(grow[0] > 0 and ux[0] > 0, "a pore pressure of 1 MPa grows the pore (by %.3e m2)"
+            " and pushes the free block's right face out (%.3e m)" % (grow[0], ux[0]))
+    t.close(TOL, ux[1], 2*ux[0], ux[0], "twice the pore pressure, twice the displacement")
     solid.freeState(start)
     solid.terminate()
     solid.free()

@@ -588,3 +588,70 @@ TEST(couplingInterface, aHoleInAFreeBlockGrowsWithItsThermalStrain)
     EXPECT_NEAR(after.pores[0].centroid.y(), 1.0*(1 + eps), 1e-14);
     EXPECT_NEAR(after.porosity(), 0.2, 1e-14);
 }
+
+
+namespace
+{
+
+//- thermalBlock's free column with a 0.4 x 1 hole, whose edges are also the
+//  patch 'hole' (traction-free in 0/D)
+std::unique_ptr<modelCase> columnWithAHole()
+{
+    auto c = thermalBlock(false);
+    c->dir.write("system/nmmMeshDict", std::string(nmm::test::header)
+        + "blocks ( a { material rock; polygon ((0 0) (1 0) (1 2) (0 2));"
+          " holes ( ((0.3 0.5) (0.7 0.5) (0.7 1.5) (0.3 1.5)) ); } );\n"
+          "patches { bottom { type box; min (-1 -1); max (2 1e-9); }"
+          " left { type box; min (-1 -1); max (1e-9 3); }"
+          " top { type box; min (-1 1.999999); max (2 3); }"
+          " right { type box; min (0.999999 -1); max (2 3); }"
+          " hole { type box; min (0.29 0.49); max (0.71 1.51); } }\n"
+          "cover { type structured; cellSize 0.3; }\n");
+    c->dir.write("0/D", std::string(nmm::test::header) + "dimensions [0 1 0 0 0 0 0];\n"
+        "internalField uniform (0 0 0);\nboundaryField {"
+        " \"(bottom|left)\" { type fixedNormal; }"
+        " \"(top|right|hole)\" { type tractionDisplacement; traction uniform (0 0 0);"
+        " pressure uniform 0; } }\n");
+    return c;
+}
+
+} // End anonymous namespace
+
+
+TEST(couplingInterface, aPorePressureActsOnThePoresWallsAsAPatchPressureWould)
+{
+    const auto c = columnWithAHole();
+    const double p = 7;
+    const auto solve = [&](const std::string& region)
+    {
+        auto m = c->model();
+        couplingInterface ci(*m);
+        ci.setPressure(region, std::vector<double>(region == "pores" ? 1 : 4, p));
+        ci.setDeltaT(1);
+        stepOnce(ci);
+        return std::make_pair(ci.displacement("top")[0], ci.pores().pores.at(0).area);
+    };
+    const auto [throughPore, poreArea] = solve("pores");
+    const auto [throughPatch, patchArea] = solve("hole");
+    // The hole's walls pushed out: the column grows, and so does the pore
+    EXPECT_GT(throughPore.y(), 0);
+    EXPECT_GT(poreArea, 0.4);
+    EXPECT_LT((throughPore - throughPatch).norm(), 1e-12*throughPatch.norm());
+    EXPECT_NEAR(poreArea, patchArea, 1e-12*patchArea);
+}
+
+
+TEST(couplingInterface, aPorePressureNeedsOneFiniteValuePerPore)
+{
+    const auto c = columnWithAHole();
+    auto m = c->model();
+    couplingInterface ci(*m);
+    EXPECT_EQ(message([&] { ci.setPressure("pores", {1, 2}); }),
+              "region 'pores' has 1 pores; 2 values were given");
+    EXPECT_EQ(message([&] { ci.setPressure("pores", {std::nan("")}); }),
+              "region 'pores': the value of pore 0 is not finite");
+    // Nothing was applied
+    ci.setDeltaT(1);
+    stepOnce(ci);
+    EXPECT_EQ(ci.displacement("top")[0].norm(), 0);
+}

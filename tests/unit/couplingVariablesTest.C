@@ -227,8 +227,8 @@ TEST(couplingVariables, poresHaveACapacityAndOnePorosity)
     EXPECT_FALSE(vars.find("pores.porosity")->isArray());
     EXPECT_EQ(vars.find("pores.nPores")->causality, "output");
 
-    EXPECT_EQ(error("modelName m; regions { pores { read (pressure); write (); maxPores 1; } }\n"),
-        "2: region 'pores' cannot read 'pressure' (it can read nothing)");
+    EXPECT_EQ(error("modelName m; regions { pores { read (temperature); write (); maxPores 1; } }\n"),
+        "2: region 'pores' cannot read 'temperature' (it can read: pressure)");
     EXPECT_EQ(error("modelName m; regions { top { read (); write (); maxPores 1; } }\n"),
         "2: maxPores is for the region 'pores' only");
 }

@@ -282,7 +282,8 @@ void fmuInstance::apply(const couplingVariable& v, const std::vector<double>& va
     }
     else if (v.field == "pressure")
     {
-        const std::size_t n = v.region == "fractures" ? fracturesFaces() : values.size();
+        const std::size_t n = v.region == "fractures" ? fracturesFaces()
+            : v.region == "pores" ? solid_->pores().pores.size() : values.size();
         if (n > values.size()) checkCapacity();
         solid_->setPressure(v.region, std::vector<double>(values.begin(), values.begin() + long(n)));
     }

@@ -159,6 +159,11 @@ void couplingInterface::checkValues(const std::string& region, const std::vector
 
 void couplingInterface::setPressure(const std::string& region, const std::vector<double>& p)
 {
+    if (region == poresRegion)
+    {
+        setPorePressure(p);
+        return;
+    }
     checkValues(region, p);
     if (isFractures(region))
     {
@@ -166,16 +171,62 @@ void couplingInterface::setPressure(const std::string& region, const std::vector
         return;
     }
     pressure_[region] = p;
+    applySegmentPressure();
+}
+
+
+void couplingInterface::applySegmentPressure()
+{
     std::vector<double> perSegment(model_.elements().segments().size(), 0.0);
-    for (const auto& [name, values] : pressure_)
+    const auto add = [&](const std::vector<std::vector<std::size_t>>& faces,
+        const std::vector<double>& values)
     {
-        const auto& faces = segments_.at(name);
         for (std::size_t f = 0; f < faces.size(); ++f)
         {
             for (const std::size_t i : faces[f]) perSegment[i] += values[f];
         }
-    }
+    };
+    for (const auto& [name, values] : pressure_) add(segments_.at(name), values);
+    add(poreWalls_, porePressure_);
     model_.setCouplingPressure(std::move(perSegment));
+}
+
+
+void couplingInterface::setPorePressure(const std::vector<double>& p)
+{
+    // The walls where the step starts, where the pressure acts from
+    const poreSpace space = poresAt(model_.state());
+    if (p.size() != space.pores.size())
+    {
+        throw couplingError("region 'pores' has " + std::to_string(space.pores.size())
+            + " pores; " + std::to_string(p.size()) + " values were given");
+    }
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        if (!std::isfinite(p[i]))
+        {
+            throw couplingError("region 'pores': the value of pore " + std::to_string(i)
+                + " is not finite");
+        }
+    }
+    poreWalls_.assign(p.size(), {});
+    const auto& segments = model_.elements().segments();
+    const Eigen::Matrix2Xd patchD = model_.assembler().patchDisplacements(model_.state().D);
+    for (std::size_t i = 0; i < segments.size(); ++i)
+    {
+        if (segments[i].kind != physicalCover::segmentKind::blockEdge) continue;
+        const auto [a, b] = segmentEnds(model_, segments[i], patchD);
+        // Material on the left from a to b: just to the right is what the
+        // wall faces (a pore, another block, or the outside)
+        const Eigen::Vector2d outward(b.y() - a.y(), a.x() - b.x());
+        const Eigen::Vector2d probe = 0.5*(a + b) + 1e-6*outward;
+        for (std::size_t k = 0; k < space.pores.size(); ++k)
+        {
+            if (space.pores[k].contains(probe)) poreWalls_[k].push_back(i);
+        }
+    }
+    porePressure_ = p;
+    applySegmentPressure();
 }
 
 
@@ -281,10 +332,16 @@ std::vector<Eigen::Vector4d> couplingInterface::blockStress() const
 
 poreSpace couplingInterface::pores() const
 {
+    return poresAt(model_.latestState());
+}
+
+
+poreSpace couplingInterface::poresAt(const solidState& s) const
+{
     const auto& cover = model_.cover();
     const auto& pc = model_.elements();
     if (!outlines_) outlines_ = std::make_unique<contactBoundaries>(cover, pc, model_.geometry());
-    const Eigen::Matrix2Xd patchD = model_.assembler().patchDisplacements(model_.latestState().D);
+    const Eigen::Matrix2Xd patchD = model_.assembler().patchDisplacements(s.D);
     std::vector<std::vector<poreSpace::loop>> blocks(model_.geometry().blocks().size());
     for (const contactLoop& l : outlines_->loops())
     {

@@ -79,7 +79,8 @@ const specList& readable(const std::string& kind)
     static const specList fractures{{"pressure", "Pa", 1,
         "fluid pressure in the contact, pushing its faces apart"}};
     static const specList blocks{{"temperature", "K", 1, "temperature of the block"}};
-    static const specList pores{};
+    static const specList pores{{"pressure", "Pa", 1,
+        "fluid pressure in the pore, acting as -p n on its walls"}};
     return kind == fracturesRegion ? fractures : kind == blocksRegion ? blocks
         : kind == poresRegion ? pores : patch;
 }

@@ -56,12 +56,34 @@ poreSpace::pore poreOf(const cgalPolygon& hole)
         c += cross*(p + q);
     }
     poreSpace::pore result;
+    for (auto v = hole.vertices_begin(); v != hole.vertices_end(); ++v)
+    {
+        result.boundary.emplace_back(CGAL::to_double(v->x()), CGAL::to_double(v->y()));
+    }
     result.area = -0.5*a;
     if (a != 0) result.centroid = c/(3*a);
     return result;
 }
 
 } // End anonymous namespace
+
+
+bool poreSpace::pore::contains(const Eigen::Vector2d& x) const
+{
+    // Crossings of a ray from x in +x
+    bool inside = false;
+    for (std::size_t i = 0, j = boundary.size() - 1; i < boundary.size(); j = i++)
+    {
+        const Eigen::Vector2d& p = boundary[i];
+        const Eigen::Vector2d& q = boundary[j];
+        if ((p.y() > x.y()) != (q.y() > x.y())
+         && x.x() < p.x() + (x.y() - p.y())*(q.x() - p.x())/(q.y() - p.y()))
+        {
+            inside = !inside;
+        }
+    }
+    return inside;
+}
 
 
 poreSpace poreSpace::of(const std::vector<std::vector<loop>>& blocks)
