@@ -1,15 +1,16 @@
 #!/usr/bin/python3
+# Needs Debian's /usr/bin/python3 (python3-numpy).
 """A minimal FMI 3.0 co-simulation importer, in Python's standard library
-only (zipfile, xml.etree, ctypes): how a coupled solver or a co-simulation
-master drives the nmmSolid FMU that nmmFmuExport packs.
+(zipfile, xml.etree, ctypes) and numpy: how a coupled solver or a
+co-simulation master drives the nmmSolid FMU that nmmFmuExport packs.
 
     fmu = fmi3Master.fmu("sneddonCrack.fmu")    # unzip, read the model
     solid = fmu.instantiate("solid")            # description, load the binary
-    solid.enterInitializationMode(0.0)
-    solid.exitInitializationMode()
+    solid.enterInitializationMode(0.0)          # (or both at once:
+    solid.exitInitializationMode()              #  fmu.initialized("solid"))
     solid.set("crack.pressure", p)              # arrays by variable name
     saved = solid.getState()                    # for an implicit loop
-    solid.doStep(0.0, 1.0)
+    status, t = solid.doStep(0.0, 1.0)          # OK, or DISCARD and the time reached
     d = solid.get("crack.displacement")         # numpy array [n, 2]
     solid.setState(saved)                       # repeat the step
     solid.terminate(); solid.free()
