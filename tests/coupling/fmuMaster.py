@@ -37,7 +37,9 @@ binaries/x86_64-linux/<modelIdentifier>.so by name, call the sequence):
 4. Two instances of thermalBlocks.fmu at once, each heated by its own dT,
    each expand by their own closed form; fmi3GetFMUState on a state it
    gave before overwrites it.
-5. A dynamic case (tutorials/verification/freeFall, packed here): two
+5. With loggingOn, the solver's steps and open-close iterations come as
+   logSolver messages, until fmi3SetDebugLogging turns them off.
+6. A dynamic case (tutorials/verification/freeFall, packed here): two
    communication steps, each the solid's own steps, fall by -g t^2/2 to
    1e-10 (DDA with the velocity carried over is exact for a free fall).
 Exit 1 when a check fails.
@@ -248,6 +250,25 @@ def wrongCalls(t, fmi3Master, fmu):
     s.free()
 
 
+def solverLog(t, fmi3Master, fmu):
+    """loggingOn sends the solver's log as logSolver messages;
+    fmi3SetDebugLogging turns it off"""
+    solid = fmu.instantiate("logged", loggingOn=True)
+    solid.enterInitializationMode(0.0)
+    solid.exitInitializationMode()
+    solid.doStep(0.0, 1.0)
+    lines = [m for s, c, m in solid.messages if c == "logSolver"]
+    t.check(any("step from 0 by 1" in m for m in lines)
+            and any("open-close" in m for m in lines),
+            "loggingOn: %d logSolver messages, the step and its open-close iterations"
+            % len(lines))
+    solid.check("SetDebugLogging", False, 0, None)
+    before = len(solid.messages)
+    solid.doStep(1.0, 1.0)
+    t.check(len(solid.messages) == before, "fmi3SetDebugLogging(false): no more messages")
+    solid.free()
+
+
 def twoInstances(t, fmi3Master, fmu):
     """Instances share nothing: each its own temperature and result; a state
     given to fmi3GetFMUState again is overwritten with the present one"""
@@ -307,6 +328,7 @@ def main():
     fracture = fmi3Master.fmu(t.fmus/"fractureFlow.fmu", t.work/"fractureFlow")
     modelDescription(t, fmi3Master, fracture)
     sequence(t, fmi3Master, fracture)
+    solverLog(t, fmi3Master, fracture)
     thermal = fmi3Master.fmu(t.fmus/"thermalBlocks.fmu", t.work/"thermalBlocks")
     wrongCalls(t, fmi3Master, thermal)
     twoInstances(t, fmi3Master, thermal)

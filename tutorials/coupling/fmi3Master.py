@@ -102,6 +102,8 @@ class fmu:
         L.fmi3GetUInt64.argtypes = [C.c_void_p, arr(VR), C.c_size_t, arr(C.c_uint64),
                                     C.c_size_t]
         L.fmi3SetUInt64.argtypes = L.fmi3GetUInt64.argtypes
+        L.fmi3SetDebugLogging.argtypes = [C.c_void_p, C.c_bool, C.c_size_t,
+                                           C.POINTER(C.c_char_p)]
         L.fmi3GetFMUState.argtypes = [C.c_void_p, arr(C.c_void_p)]
         L.fmi3SetFMUState.argtypes = [C.c_void_p, C.c_void_p]
         L.fmi3FreeFMUState.argtypes = [C.c_void_p, arr(C.c_void_p)]
@@ -109,10 +111,11 @@ class fmu:
                                  arr(C.c_bool), arr(C.c_bool), arr(C.c_bool),
                                  arr(C.c_double)]
 
-    def instantiate(self, name="solid", token=None, resources=None):
+    def instantiate(self, name="solid", token=None, resources=None, loggingOn=False):
+        """loggingOn: the solver's log comes as messages of category logSolver"""
         return instance(self, name, self.token if token is None else token,
                         str(self.dir / "resources") + "/" if resources is None
-                        else resources)
+                        else resources, loggingOn)
 
     def initialized(self, name="solid", startTime=0.0):
         """An instance through initialization, ready for its first step"""
@@ -128,7 +131,7 @@ class fmu:
 class instance:
     """One instance of an FMU, with the messages it logged"""
 
-    def __init__(self, fmu, name, token, resources):
+    def __init__(self, fmu, name, token, resources, loggingOn=False):
         self.fmu = fmu
         self.messages = []
 
@@ -136,7 +139,7 @@ class instance:
             self.messages.append((status, category.decode(), message.decode()))
         self._logger = LOGGER(log)      # kept alive as long as the instance
         self.handle = fmu.lib.fmi3InstantiateCoSimulation(
-            name.encode(), token.encode(), resources.encode(), False, False, False,
+            name.encode(), token.encode(), resources.encode(), False, loggingOn, False,
             False, None, 0, None, self._logger, None)
         if not self.handle:
             raise fmiError("fmi3InstantiateCoSimulation", ERROR, self.lastMessage())

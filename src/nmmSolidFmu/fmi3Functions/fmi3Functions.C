@@ -9,7 +9,9 @@ Description
     (category logStatusError or logStatusDiscard), so that no exception
     crosses into the importer. A rejected call changes nothing: the
     importer may go on after fmi3Error from a wrong call, although FMI
-    does not require an FMU to allow it.
+    does not require an FMU to allow it. With loggingOn (or
+    fmi3SetDebugLogging for logSolver), the solver's steps, cuts and
+    open-close iterations come as messages of category logSolver.
 
     Model exchange, scheduled execution, clocks, serialized states and
     derivatives are not provided: those functions exist, as FMI asks, and
@@ -32,6 +34,20 @@ struct instance
     fmi3InstanceEnvironment environment = nullptr;
     fmi3LogMessageCallback logMessage = nullptr;
     std::unique_ptr<nmm::fmuInstance> fmu;
+
+    //- The solver's log as messages of category logSolver, or none
+    void logSolver(bool on)
+    {
+        if (!on || !logMessage)
+        {
+            fmu->setLog({});
+            return;
+        }
+        fmu->setLog([this](const std::string& line)
+        {
+            logMessage(environment, fmi3OK, "logSolver", (name + ": " + line).c_str());
+        });
+    }
 };
 
 
@@ -116,10 +132,18 @@ const char* fmi3GetVersion(void)
 }
 
 
-fmi3Status fmi3SetDebugLogging(fmi3Instance instance, fmi3Boolean, size_t, const fmi3String[])
+fmi3Status fmi3SetDebugLogging(fmi3Instance instance, fmi3Boolean loggingOn,
+    size_t nCategories, const fmi3String categories[])
 {
-    // Errors and discards are always logged; there is nothing more to log
-    return instance ? fmi3OK : fmi3Error;
+    if (!instance) return fmi3Error;
+    // Errors and discards are always logged; the solver's log on request
+    bool solver = nCategories == 0;
+    for (std::size_t i = 0; i < nCategories; ++i)
+    {
+        solver = solver || (categories[i] && std::string(categories[i]) == "logSolver");
+    }
+    static_cast<::instance*>(instance)->logSolver(loggingOn && solver);
+    return fmi3OK;
 }
 
 
@@ -148,7 +172,7 @@ fmi3Instance fmi3InstantiateCoSimulation
     fmi3String instantiationToken,
     fmi3String resourcePath,
     fmi3Boolean,
-    fmi3Boolean,
+    fmi3Boolean loggingOn,
     fmi3Boolean eventModeUsed,
     fmi3Boolean,
     const fmi3ValueReference[],
@@ -178,6 +202,7 @@ fmi3Instance fmi3InstantiateCoSimulation
         i->environment = environment;
         i->logMessage = logMessage;
         i->fmu = std::make_unique<nmm::fmuInstance>(path, instantiationToken);
+        i->logSolver(loggingOn);
         return i.release();
     }
     catch (const std::exception& e)

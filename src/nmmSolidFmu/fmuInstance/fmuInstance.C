@@ -74,6 +74,7 @@ void fmuInstance::load()
     vtk_.reset();
     solid_.reset();
     model_ = nmmSolidModel::New(caseFolder(resources_));
+    model_->setLog(log_);
     solid_ = std::make_unique<couplingInterface>(*model_);
     variables_ = std::make_unique<couplingVariables>(resources_/"system"/"couplingDict", *solid_);
     if (variables_->instantiationToken() != token_)
@@ -89,6 +90,24 @@ void fmuInstance::load()
     }
     mode_ = mode::instantiated;
     checkCapacity();
+}
+
+
+void fmuInstance::setLog(std::function<void(const std::string&)> sink)
+{
+    logSink_ = std::move(sink);
+}
+
+
+void fmuInstance::flushLog()
+{
+    // Without a sink the log is dropped, a step at a time
+    std::istringstream lines(log_.str());
+    log_.str({});
+    for (std::string line; std::getline(lines, line);)
+    {
+        if (logSink_ && !line.empty()) logSink_(line);
+    }
 }
 
 
@@ -429,6 +448,7 @@ void fmuInstance::doStep(double t, double h)
         for (;;)
         {
             solid_->setDeltaT(dt);
+            log_ << "step from " << solid_->time() << " by " << dt << '\n';
             const stepReport report = solid_->solveStep();
             if (report.converged)
             {
@@ -437,8 +457,10 @@ void fmuInstance::doStep(double t, double h)
             }
             solid_->restoreState(saved);
             const auto shorter = report.cutIsFutile ? std::nullopt : steps.cut(dt);
+            log_ << "    step cut: " << report.cutReason << '\n';
             if (!shorter)
             {
+                flushLog();
                 throw fmuDiscard("the solid cannot step from " + text(solid_->time())
                     + ": " + report.cutReason, solid_->time());
             }
@@ -447,6 +469,7 @@ void fmuInstance::doStep(double t, double h)
         solid_->acceptStep();
         checkCapacity();
     }
+    flushLog();
     writeFrame();
 }
 

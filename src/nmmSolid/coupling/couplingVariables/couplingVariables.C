@@ -451,6 +451,8 @@ void couplingVariables::writeModelDescription
           "    <Category name=\"logStatusError\" description=\"wrong calls and failed steps\"/>\n"
           "    <Category name=\"logStatusDiscard\" description=\"steps the solid could not"
           " complete\"/>\n"
+          "    <Category name=\"logSolver\" description=\"the solid's steps, cuts and"
+          " open-close iterations (with loggingOn)\"/>\n"
           "  </LogCategories>\n"
        << "  <DefaultExperiment startTime=\"0\" stepSize=\"1\"/>\n"
        << "  <ModelVariables>\n";
