@@ -4,6 +4,8 @@
 // wrong input is an error that changes nothing.
 #include "nmmSolid/coupling/couplingInterface/couplingInterface.H"
 
+#include "nmmSolid/output/solidOutput/solidOutput.H"
+
 #include "modelCase.H"
 
 #include <gtest/gtest.h>
@@ -646,4 +648,23 @@ TEST(couplingInterface, aPorePressureNeedsOneFiniteValuePerPore)
     ci.setDeltaT(1);
     stepOnce(ci);
     EXPECT_EQ(ci.displacement("top")[0].norm(), 0);
+}
+
+
+TEST(couplingInterface, theTemperatureSurvivesARestart)
+{
+    const auto c = thermalBlock(false);
+    auto m = c->model();
+    couplingInterface ci(*m);
+    ci.setTemperature({350});
+    ci.setDeltaT(1);
+    stepOnce(ci);
+    nmm::solidOutput::writeState(c->dir.path, *m);
+    const nmm::solidState restarted = nmm::solidOutput::readState(c->dir.path, *m);
+    EXPECT_EQ(restarted.temperature, std::vector<double>{350});
+
+    // A state without one (nothing set) reads back without one
+    auto fresh = c->model();
+    nmm::solidOutput::writeState(c->dir.path, *fresh);
+    EXPECT_TRUE(nmm::solidOutput::readState(c->dir.path, *fresh).temperature.empty());
 }

@@ -394,6 +394,8 @@ void solidOutput::writeState
     for (const auto& v : s.sigma) sigma.values.insert(sigma.values.end(), v.data(), v.data() + 4);
     out.write("sigma", sigma);
     writeContacts(out, s.contacts);
+    // Set by a coupled thermal solver only
+    if (!s.temperature.empty()) out.write("temperature", s.temperature);
     out.commit();
 }
 
@@ -439,6 +441,16 @@ solidState solidOutput::readState
         s.sigma.emplace_back(sigma(e, 0), sigma(e, 1), sigma(e, 2), sigma(e, 3));
     }
     s.contacts = readContacts(in, file, model);
+    if (in.exists("temperature"))
+    {
+        s.temperature = in.read<double>("temperature");
+        if (s.temperature.size() != model.geometry().blocks().size())
+        {
+            throw fatalError(file.string() + ": temperatures of "
+                + std::to_string(s.temperature.size()) + " blocks but the mesh has "
+                + std::to_string(model.geometry().blocks().size()));
+        }
+    }
     return s;
 }
 
