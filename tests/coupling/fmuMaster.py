@@ -42,6 +42,10 @@ binaries/x86_64-linux/<modelIdentifier>.so by name, call the sequence):
 6. A dynamic case (tutorials/verification/freeFall, packed here): two
    communication steps, each the solid's own steps, fall by -g t^2/2 to
    1e-10 (DDA with the velocity carried over is exact for a free fall).
+7. A step the solid cannot complete (fractureFlow allowed one open-close
+   iteration, packed here, its fracture pressed open): fmi3Discard with
+   the last time reached and a logged reason; restored, the instance
+   steps on.
 Exit 1 when a check fails.
 
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -295,27 +299,69 @@ def freeFall(t, fmi3Master):
     """A dynamic case: tutorials/verification/freeFall with a patch on its
     bottom edge, packed with nmmFmuExport here; two communication steps of
     0.05 s, each the solid's own steps"""
-    case = t.work/"freeFall"
-    shutil.rmtree(case, ignore_errors=True)
-    shutil.copytree(t.project/"tutorials/verification/freeFall", case,
-                    ignore=shutil.ignore_patterns("VTK", "log.*", "[1-9]*", "0.*"))
-    edit = lambda f, a, b: (case/f).write_text((case/f).read_text().replace(a, b))  # noqa: E731
-    edit("system/nmmMeshDict", "patches\n{\n}",
-         "patches\n{\n    bottom { type box; min (-1 -1e-9); max (2 1e-9); }\n}")
-    edit("0/D", "    // No patch: every edge is traction free\n", "    bottom { type"
-         " tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }\n")
-    (case/"system/couplingDict").write_text(
-        "FoamFile { version 2.0; format ascii; class dictionary; object couplingDict; }\n"
-        "modelName freeFall;\nregions { bottom { read (); write (displacement); } }\n")
-    with open(case/"log.nmmFmuExport", "w") as log:
-        subprocess.run([str(t.bin/"nmmFmuExport"), "-case", str(case)], stdout=log,
-                       stderr=subprocess.STDOUT, check=True)
-    solid = fmi3Master.fmu(case/"freeFall.fmu", t.work/"freeFallFmu").initialized("fall")
+    fmu = packed(t, "tutorials/verification/freeFall", [
+        ("system/nmmMeshDict", "patches\n{\n}",
+         "patches\n{\n    bottom { type box; min (-1 -1e-9); max (2 1e-9); }\n}"),
+        ("0/D", "    // No patch: every edge is traction free\n", "    bottom { type"
+         " tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }\n")],
+        {"system/couplingDict": "FoamFile { version 2.0; format ascii; class dictionary;"
+         " object couplingDict; }\nmodelName freeFall;\n"
+         "regions { bottom { read (); write (displacement); } }\n"})
+    solid = fmi3Master.fmu(fmu, t.work/"freeFallFmu").initialized("fall")
     for k in (1, 2):
         status, last = solid.doStep(0.05*(k - 1), 0.05)
         y = -9.81*(0.05*k)**2/2
         t.close(1e-10, solid.get("bottom.displacement")[0][1], y, abs(y),
                 "free fall through the FMU at t = %g (-g t^2/2)" % last)
+    solid.free()
+
+
+def packed(t, tutorial, edits, files=None):
+    """A copy of a tutorial with its files edited ((file, old, new) ...)
+    and written ({file: text}), packed by nmmFmuExport; the path of its FMU"""
+    case = t.work/Path(tutorial).name
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(t.project/tutorial, case,
+                    ignore=shutil.ignore_patterns("VTK", "log.*", "[1-9]*", "0.*", "*.fmu",
+                                                  "nmmMesh", "postProcessing", "driver"))
+    for name, old, new in edits:
+        text = (case/name).read_text()
+        if old not in text:
+            raise SystemExit("%s: no '%s' to replace" % (case/name, old))
+        (case/name).write_text(text.replace(old, new))
+    for name, text in (files or {}).items():
+        (case/name).write_text(text)
+    with open(case/"log.nmmFmuExport", "w") as log:
+        subprocess.run([str(t.bin/"nmmFmuExport"), "-case", str(case)], stdout=log,
+                       stderr=subprocess.STDOUT, check=True)
+    return next(case.glob("*.fmu"))
+
+
+def discard(t, fmi3Master):
+    """A step the solid cannot complete: fractureFlow allowed one open-close
+    iteration, its fracture opened by a pressure above the normal stress"""
+    fmu = packed(t, "tutorials/coupling/fractureFlow", [("system/nmmSolution",
+        "maxOpenCloseIterations  30;", "maxOpenCloseIterations  1;")])
+    solid = fmi3Master.fmu(fmu, t.work/"discardFmu").initialized("discard")
+    solid.doStep(0.0, 1.0)
+    saved = solid.getState()
+    n, capacity = int(solid.get("fractures.nFaces")), int(solid.get("fractures.capacity"))
+    p = np.zeros(capacity)
+    p[:n] = 2e7
+    solid.set("fractures.pressure", p)
+    status, last = solid.doStep(1.0, 1.0)
+    category, message = solid.messages[-1][1:] if solid.messages else ("", "")
+    t.check(status == fmi3Master.DISCARD and last == 1.0 and category == "logStatusDiscard"
+            and "did not settle" in message,
+            "a step that cannot converge: fmi3Discard at the last time reached (%g), logged:"
+            " %s" % (last, message))
+    solid.setState(saved)
+    p[:n] = 1e6
+    solid.set("fractures.pressure", p)
+    status, last = solid.doStep(1.0, 1.0)
+    t.check(status == fmi3Master.OK and last == 2.0,
+            "restored, with a pressure below the normal stress it steps on (to t = %g)" % last)
+    solid.freeState(saved)
     solid.free()
 
 
@@ -333,6 +379,7 @@ def main():
     wrongCalls(t, fmi3Master, thermal)
     twoInstances(t, fmi3Master, thermal)
     freeFall(t, fmi3Master)
+    discard(t, fmi3Master)
     return t.end()
 
 
