@@ -21,24 +21,40 @@ using nmm::test::modelCase;
 namespace
 {
 
-//- A 1 x 2 column on rollers (bottom and left), its top loaded by the
-//  pressure of 0/D, p0
-std::unique_ptr<modelCase> column(double p0)
+const std::string tractionFree =
+    "{ type tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }";
+
+
+//- A 1 x 2 static column whose sides are the patches bottom, left, top and
+//  right; holes and more patches as given
+std::unique_ptr<modelCase> columnCase
+(
+    const std::string& boundaryField,
+    const std::string& holes = {},
+    const std::string& morePatches = {}
+)
 {
     return std::make_unique<modelCase>
     (
-        "a { material rock; polygon ((0 0) (1 0) (1 2) (0 2)); }",
+        "a { material rock; polygon ((0 0) (1 0) (1 2) (0 2)); " + holes + "}",
         "bottom { type box; min (-1 -1); max (2 1e-9); }"
         "left { type box; min (-1 -1); max (1e-9 3); }"
         "top { type box; min (-1 1.999999); max (2 3); }"
-        "right { type box; min (0.999999 -1); max (2 3); }",
+        "right { type box; min (0.999999 -1); max (2 3); }" + morePatches,
         "type structured; cellSize 0.3;",
         "analysis static; largeDisplacement no;\n",
-        "\"(bottom|left)\" { type fixedNormal; }"
-        "right { type tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }"
-        "top { type tractionDisplacement; traction uniform (0 0 0); pressure uniform "
-            + std::to_string(p0) + "; }"
+        boundaryField
     );
+}
+
+
+//- The column on rollers (bottom and left), its top loaded by the
+//  pressure of 0/D, p0
+std::unique_ptr<modelCase> column(double p0)
+{
+    return columnCase("\"(bottom|left)\" { type fixedNormal; } right " + tractionFree
+        + "top { type tractionDisplacement; traction uniform (0 0 0); pressure uniform "
+            + std::to_string(p0) + "; }");
 }
 
 //- Solve the step and accept it
@@ -256,30 +272,24 @@ TEST(couplingInterface, pressureOnCrackFacesOpensTheCrackAsThePressureOf0DDoes)
 namespace
 {
 
-//- A 1 x 2 block of rock with alpha 1e-5 and Tref 300, on rollers at
-//  the bottom and the left; 'confined' puts the top and the right on
-//  rollers too
-std::unique_ptr<modelCase> thermalBlock(bool confined)
+//- The case with alpha 1e-5 and Tref 300 for its material
+std::unique_ptr<modelCase> withAlpha(std::unique_ptr<modelCase> c)
 {
-    const std::string free =
-        "\"(top|right)\" { type tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }";
-    auto c = std::make_unique<modelCase>
-    (
-        "a { material rock; polygon ((0 0) (1 0) (1 2) (0 2)); }",
-        "bottom { type box; min (-1 -1); max (2 1e-9); }"
-        "left { type box; min (-1 -1); max (1e-9 3); }"
-        "top { type box; min (-1 1.999999); max (2 3); }"
-        "right { type box; min (0.999999 -1); max (2 3); }",
-        "type structured; cellSize 0.3;",
-        "analysis static; largeDisplacement no;\n",
-        confined ? "\".*\" { type fixedNormal; }"
-                 : "\"(bottom|left)\" { type fixedNormal; }" + free
-    );
     c->dir.write("constant/mechanicalProperties", std::string(nmm::test::header)
         + "planeStress no; thickness 1;\n"
           "materials { rock { type linearElastic; E 1000; nu 0.3; rho 2000;"
           " alpha 1e-5; Tref 300; } }\n");
     return c;
+}
+
+
+//- A 1 x 2 block of rock with alpha 1e-5 and Tref 300, on rollers at
+//  the bottom and the left; 'confined' puts the top and the right on
+//  rollers too
+std::unique_ptr<modelCase> thermalBlock(bool confined)
+{
+    return withAlpha(columnCase(confined ? "\".*\" { type fixedNormal; }"
+        : "\"(bottom|left)\" { type fixedNormal; } \"(top|right)\" " + tractionFree));
 }
 
 } // End anonymous namespace
@@ -566,22 +576,10 @@ namespace
 //  patch 'hole' (traction-free in 0/D)
 std::unique_ptr<modelCase> columnWithAHole()
 {
-    auto c = thermalBlock(false);
-    c->dir.write("system/nmmMeshDict", std::string(nmm::test::header)
-        + "blocks ( a { material rock; polygon ((0 0) (1 0) (1 2) (0 2));"
-          " holes ( ((0.3 0.5) (0.7 0.5) (0.7 1.5) (0.3 1.5)) ); } );\n"
-          "patches { bottom { type box; min (-1 -1); max (2 1e-9); }"
-          " left { type box; min (-1 -1); max (1e-9 3); }"
-          " top { type box; min (-1 1.999999); max (2 3); }"
-          " right { type box; min (0.999999 -1); max (2 3); }"
-          " hole { type box; min (0.29 0.49); max (0.71 1.51); } }\n"
-          "cover { type structured; cellSize 0.3; }\n");
-    c->dir.write("0/D", std::string(nmm::test::header) + "dimensions [0 1 0 0 0 0 0];\n"
-        "internalField uniform (0 0 0);\nboundaryField {"
-        " \"(bottom|left)\" { type fixedNormal; }"
-        " \"(top|right|hole)\" { type tractionDisplacement; traction uniform (0 0 0);"
-        " pressure uniform 0; } }\n");
-    return c;
+    return withAlpha(columnCase(
+        "\"(bottom|left)\" { type fixedNormal; } \"(top|right|hole)\" " + tractionFree,
+        "holes ( ((0.3 0.5) (0.7 0.5) (0.7 1.5) (0.3 1.5)) ); ",
+        "hole { type box; min (0.29 0.49); max (0.71 1.51); }"));
 }
 
 } // End anonymous namespace

@@ -8,6 +8,7 @@
 #include "nmmSolid/io/case/caseFolder/caseFolder.H"
 #include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
 
+#include "modelCase.H"
 #include "testTools.H"
 
 #include <gtest/gtest.h>
@@ -20,12 +21,11 @@
 
 namespace nm = nmm;
 using nmm::test::errorOf;
-using nmm::test::tempDir;
 
 namespace
 {
 
-const char* header = "FoamFile { version 2.0; format ascii; class dictionary; object x; }\n";
+using nmm::test::header;
 
 const char* square = "a { material rock; polygon ((0 0) (1 0) (1 1) (0 1)); }";
 const char* sides =
@@ -36,10 +36,11 @@ const char* freeAll =
 const char* newmark = "analysis dynamic; timeScheme { type Newmark; }\n";
 const char* staticLinear = "analysis static; largeDisplacement no;\n";
 
-//- A case folder from the texts of its files, with its model and clock
-struct testCase
+//- A case folder from the texts of its files (nmm::test::modelCase, in
+//  plane stress, with the function objects and the material given), with
+//  its model and clock
+struct testCase : nmm::test::modelCase
 {
-    tempDir dir;
     std::ostringstream log;
     std::unique_ptr<nm::nmmSolidModel> model;
     std::unique_ptr<nm::Time> runTime;
@@ -55,24 +56,15 @@ struct testCase
         const std::string& material = "E 1000; nu 0.3;",
         bool functionObjects = true
     )
+    :
+        modelCase(blocks, patches, "type structured; cellSize 0.25;", solution,
+            boundaryField, gravity)
     {
         dir.write("system/controlDict", std::string(header)
             + "endTime 1; deltaT 1; writeInterval 1;\nfunctions {" + functions + "}\n");
-        dir.write("system/nmmMeshDict", std::string(header) + "blocks (" + blocks
-            + ");\npatches {" + patches + "}\ncover { type structured; cellSize 0.25; }\n");
-        dir.write("system/nmmSolution", std::string(header) + solution);
         dir.write("constant/mechanicalProperties", std::string(header)
             + "planeStress yes; thickness 1;\n"
               "materials { rock { type linearElastic; " + material + " rho 2000; } }\n");
-        dir.write("constant/contactProperties", std::string(header)
-            + "default { law mohrCoulomb; frictionAngle 30; }\n");
-        dir.write("0/D", std::string(header) + "dimensions [0 1 0 0 0 0 0];\n"
-            "internalField uniform (0 0 0);\nboundaryField {" + boundaryField + "}\n");
-        if (!gravity.empty())
-        {
-            dir.write("constant/g", std::string(header)
-                + "dimensions [0 1 -2 0 0 0 0]; value " + gravity + ";\n");
-        }
         model = nm::nmmSolidModel::New(nm::caseFolder(dir.path));
         nm::Time::options opts;
         opts.functionObjects = functionObjects;
