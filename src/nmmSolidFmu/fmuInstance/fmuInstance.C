@@ -467,8 +467,9 @@ void fmuInstance::doStep(double t, double h)
             dt = *shorter;
         }
         solid_->acceptStep();
-        checkCapacity();
     }
+    // The importer sees the arrays after the step, not between its steps
+    checkCapacity();
     flushLog();
     writeFrame();
 }

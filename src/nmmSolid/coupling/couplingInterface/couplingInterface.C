@@ -338,6 +338,16 @@ poreSpace couplingInterface::pores() const
 
 poreSpace couplingInterface::poresAt(const solidState& s) const
 {
+    // Reading a region's fields asks again for the same state's pores
+    if (poreCacheD_.size() == s.D.size() && poreCacheD_ == s.D) return poreCache_;
+    poreCache_ = outlinePores(s);
+    poreCacheD_ = s.D;
+    return poreCache_;
+}
+
+
+poreSpace couplingInterface::outlinePores(const solidState& s) const
+{
     const auto& cover = model_.cover();
     const auto& pc = model_.elements();
     if (!outlines_) outlines_ = std::make_unique<contactBoundaries>(cover, pc, model_.geometry());
