@@ -1,7 +1,7 @@
 #include "nmmSolid/contact/contactModel/contactModel.H"
 
 #include "nmmSolid/cover/physicalCover/physicalCover.H"
-#include "nmmSolid/solver/assembler/nmmAssembler.H"
+#include "nmmSolid/space/manifoldSpace/manifoldSpace.H"
 
 #include <algorithm>
 #include <cmath>
@@ -114,24 +114,20 @@ void addOuter
 
 contactModel::contactModel
 (
-    const mathematicalCover& cover,
-    const physicalCover& pc,
+    const manifoldSpace& space,
     const blockGeometry& geometry,
-    const nmmAssembler& assembler,
     contactProperties properties,
     std::vector<std::size_t> materialOfBlock,
     const settings& s,
     double thickness
 )
 :
-    cover_(cover),
-    pc_(pc),
-    assembler_(assembler),
+    space_(space),
     properties_(std::move(properties)),
     materialOfBlock_(std::move(materialOfBlock)),
     settings_(s),
     thickness_(thickness),
-    boundaries_(cover, pc, geometry),
+    boundaries_(space.cover(), space.elements(), geometry),
     referenceLength_(medianTributaryLength(boundaries_.loops())),
     gapRounding_(gapRounding(boundaries_.loops())),
     search_(s.searchDistance)
@@ -160,7 +156,7 @@ contactModel::terms contactModel::relativeTerms
     terms all;
     const auto add = [&](std::int32_t e, const manifoldElement::baryPoint& w, double sign)
     {
-        for (const auto& t : assembler_.dofTerms(e))
+        for (const auto& t : space_.dofTerms(e))
         {
             all.emplace_back(t.dof, sign*w[t.local/2]*dir[t.local%2]*t.coefficient);
         }
@@ -199,7 +195,7 @@ void contactModel::beginStep
     bool start
 )
 {
-    boundaries_.move(cover_, pc_, patchD);
+    boundaries_.move(space_.cover(), space_.elements(), patchD);
     const auto& loops = boundaries_.loops();
     active_.clear();
     for (const contactCandidate& c : search_.find(loops))

@@ -30,9 +30,7 @@ std::pair<Eigen::Vector2d, Eigen::Vector2d> segmentEnds
     const Eigen::Matrix2Xd& patchD
 )
 {
-    const auto& e = m.elements().elements()[s.element];
-    manifoldElement::triangleNodes T = physicalCover::triangleOf(m.cover(), e);
-    for (int k = 0; k < 3; ++k) T.col(k) += patchD.col(e.patches[k]);
+    const auto T = m.space().displacedTriangle(s.element, patchD);
     return {manifoldElement::toCartesian(T, s.p), manifoldElement::toCartesian(T, s.q)};
 }
 
@@ -112,7 +110,7 @@ std::vector<couplingInterface::face> couplingInterface::faces(const std::string&
         return result;
     }
     const auto& segments = model_.elements().segments();
-    const Eigen::Matrix2Xd patchD = model_.assembler().patchDisplacements(model_.latestState().D);
+    const Eigen::Matrix2Xd patchD = model_.space().patchDisplacements(model_.latestState().D);
     std::vector<face> result;
     for (const auto& pieces : facesOf(region))
     {
@@ -211,7 +209,7 @@ void couplingInterface::setPorePressure(const std::vector<double>& p)
     }
     poreWalls_.assign(p.size(), {});
     const auto& segments = model_.elements().segments();
-    const Eigen::Matrix2Xd patchD = model_.assembler().patchDisplacements(model_.state().D);
+    const Eigen::Matrix2Xd patchD = model_.space().patchDisplacements(model_.state().D);
     for (std::size_t i = 0; i < segments.size(); ++i)
     {
         if (segments[i].kind != physicalCover::segmentKind::blockEdge) continue;
@@ -286,7 +284,7 @@ std::vector<Eigen::Vector2d> couplingInterface::displacement(const std::string& 
             " normalJump, aperture, slip and contactTraction");
     }
     const auto& segments = model_.elements().segments();
-    const Eigen::Matrix2Xd patchD = model_.assembler().patchDisplacements(model_.latestState().D);
+    const Eigen::Matrix2Xd patchD = model_.space().patchDisplacements(model_.latestState().D);
     const Eigen::Matrix2Xd none = Eigen::Matrix2Xd::Zero(2, patchD.cols());
     std::vector<Eigen::Vector2d> result;
     for (const auto& pieces : facesOf(region))
@@ -351,7 +349,7 @@ poreSpace couplingInterface::outlinePores(const solidState& s) const
     const auto& cover = model_.cover();
     const auto& pc = model_.elements();
     if (!outlines_) outlines_ = std::make_unique<contactBoundaries>(cover, pc, model_.geometry());
-    const Eigen::Matrix2Xd patchD = model_.assembler().patchDisplacements(s.D);
+    const Eigen::Matrix2Xd patchD = model_.space().patchDisplacements(s.D);
     std::vector<std::vector<poreSpace::loop>> blocks(model_.geometry().blocks().size());
     for (const contactLoop& l : outlines_->loops())
     {

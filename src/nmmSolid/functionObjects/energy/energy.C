@@ -47,6 +47,7 @@ double energy::kinetic() const
 double energy::strain() const
 {
     const nmmAssembler& a = model_.assembler();
+    const manifoldSpace& space = model_.space();
     const Eigen::Matrix2Xd patchD = model_.patchDisplacements();
     const auto& sigma = model_.state().sigma;
     double sum = 0;
@@ -54,7 +55,7 @@ double energy::strain() const
     {
         const auto label = nmmAssembler::label(e);
         const Eigen::Vector3d s = sigma[e].head<3>();
-        const double area = a.currentArea(label, a.currentTriangle(label, patchD));
+        const double area = space.currentArea(label, space.currentTriangle(label, patchD));
         sum += 0.5*s.dot(a.material(label).D.ldlt().solve(s))*area;
     }
     return sum*a.thickness();

@@ -174,7 +174,7 @@ std::vector<Eigen::Vector2d> referenceCentroids(const nmmSolidModel& model)
     std::vector<Eigen::Vector2d> c(els.size());
     for (std::size_t e = 0; e < els.size(); ++e)
     {
-        const auto T0 = model.assembler().referenceTriangle(label(e));
+        const auto T0 = model.space().referenceTriangle(label(e));
         c[e] = manifoldElement::centroid(T0, els[e].moments);
     }
     return c;
@@ -256,7 +256,7 @@ vtkPolygonMesh solidOutput::frame(const nmmSolidModel& model)
     std::vector<std::int32_t> pointBlock;
     for (std::size_t e = 0; e < els.size(); ++e)
     {
-        const auto T0 = model.assembler().referenceTriangle(label(e));
+        const auto T0 = model.space().referenceTriangle(label(e));
         const vtkSymmTensor s = paraviewOrder(model.state().sigma[e]);
         std::vector<std::int64_t> ids;
         for (const auto& lambda : els[e].loops[0])

@@ -1,7 +1,5 @@
 #include "nmmSolid/solver/assembler/nmmAssembler.H"
 
-#include "nmmSolid/cover/mathematicalCover/mathematicalCover/mathematicalCover.H"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -86,22 +84,19 @@ segmentGeometry currentSegment
 
 nmmAssembler::nmmAssembler
 (
-    const mathematicalCover& cover,
-    const physicalCover& pc,
+    const manifoldSpace& space,
     std::vector<elementMaterial> materials,
     double thickness,
     std::vector<const boundaryRule*> segmentRules,
-    const Eigen::Vector2d& gravity,
-    bool updateGeometry
+    const Eigen::Vector2d& gravity
 )
 :
-    cover_(cover),
-    pc_(pc),
+    space_(space),
+    pc_(space.elements()),
     materials_(std::move(materials)),
     thickness_(thickness),
     rules_(std::move(segmentRules)),
-    gravity_(gravity),
-    updateGeometry_(updateGeometry)
+    gravity_(gravity)
 {
     setFluxElements();
 }
@@ -139,80 +134,9 @@ void nmmAssembler::setFluxElements()
 }
 
 
-Eigen::Matrix2Xd nmmAssembler::patchDisplacements(const Eigen::VectorXd& D) const
-{
-    Eigen::Matrix2Xd d = Eigen::Matrix2Xd::Zero(2, pc_.nPatches());
-    for (label p = 0; p < label(pc_.nPatches()); ++p)
-    {
-        for (auto t = pc_.extensionBegin(p); t != pc_.extensionEnd(p); ++t)
-        {
-            d.col(p) += t->coefficient*D.segment<2>(2*t->unknownPatch);
-        }
-    }
-    return d;
-}
-
-
-triangleNodes nmmAssembler::referenceTriangle(label e) const
-{
-    return physicalCover::triangleOf(cover_, pc_.elements()[e]);
-}
-
-
-triangleNodes nmmAssembler::currentTriangle
-(
-    label e,
-    const Eigen::Matrix2Xd& patchD
-) const
-{
-    triangleNodes T = referenceTriangle(e);
-    if (!updateGeometry_) return T;
-    for (int k = 0; k < 3; ++k) T.col(k) += patchD.col(pc_.elements()[e].patches[k]);
-    return T;
-}
-
-
-double nmmAssembler::currentArea(label e, const triangleNodes& T) const
-{
-    // The polygon moves with the linear field of its triangle
-    return pc_.elements()[e].moments.area*manifoldElement::signedArea(T)
-        /manifoldElement::signedArea(referenceTriangle(e));
-}
-
-
-std::vector<nmmAssembler::dofTerm> nmmAssembler::dofTerms(label e) const
-{
-    std::vector<dofTerm> terms;
-    for (int k = 0; k < 3; ++k)
-    {
-        const label p = pc_.elements()[e].patches[k];
-        for (auto t = pc_.extensionBegin(p); t != pc_.extensionEnd(p); ++t)
-        {
-            for (int c = 0; c < 2; ++c)
-            {
-                terms.push_back({2*k + c, 2*t->unknownPatch + c, t->coefficient});
-            }
-        }
-    }
-    return terms;
-}
-
-
-Eigen::VectorXd nmmAssembler::elementDisplacements
-(
-    label e,
-    const Eigen::VectorXd& D
-) const
-{
-    Eigen::VectorXd de = Eigen::VectorXd::Zero(6);
-    for (const auto& t : dofTerms(e)) de[t.local] += t.coefficient*D[t.dof];
-    return de;
-}
-
-
 void nmmAssembler::scatter(label e, const matrix66& Ke, triplets& K) const
 {
-    const auto terms = dofTerms(e);
+    const auto terms = space_.dofTerms(e);
     for (const auto& a : terms)
     {
         for (const auto& b : terms)
@@ -229,8 +153,8 @@ void nmmAssembler::scatter(label e, const matrix66& Ke, triplets& K) const
 
 void nmmAssembler::scatter(label r, label c, const matrix66& Ke, triplets& K) const
 {
-    const auto rows = dofTerms(r);
-    const auto cols = dofTerms(c);
+    const auto rows = space_.dofTerms(r);
+    const auto cols = space_.dofTerms(c);
     for (const auto& a : rows)
     {
         for (const auto& b : cols)
@@ -247,13 +171,13 @@ void nmmAssembler::scatter(label r, label c, const matrix66& Ke, triplets& K) co
 
 void nmmAssembler::scatter(label e, const vector6& fe, Eigen::VectorXd& f) const
 {
-    for (const auto& a : dofTerms(e)) f[a.dof] += a.coefficient*fe[a.local];
+    for (const auto& a : space_.dofTerms(e)) f[a.dof] += a.coefficient*fe[a.local];
 }
 
 
 void nmmAssembler::addElements
 (
-    const solidState& s,
+    const fieldState& s,
     const Eigen::Matrix2Xd& patchD,
     triplets& K,
     Eigen::VectorXd& f
@@ -261,8 +185,8 @@ void nmmAssembler::addElements
 {
     for (label e = 0; e < label(pc_.nElements()); ++e)
     {
-        const auto T = currentTriangle(e, patchD);
-        const double area = currentArea(e, T);
+        const auto T = space_.currentTriangle(e, patchD);
+        const double area = space_.currentArea(e, T);
         const matrix36 B = manifoldElement::strainMatrix(T);
         scatter(e, manifoldElement::stiffness(T, area, materials_[e].D, thickness_), K);
         const vector6 fInt = area*thickness_*B.transpose()*startStress(s, e);
@@ -271,7 +195,7 @@ void nmmAssembler::addElements
 }
 
 
-Eigen::Vector3d nmmAssembler::startStress(const solidState& s, label e) const
+Eigen::Vector3d nmmAssembler::startStress(const fieldState& s, label e) const
 {
     // A thermal strain in the step is a stress the element starts from
     if (temperatureIncrement_.empty()) return s.sigma[e].head<3>();
@@ -304,15 +228,15 @@ std::vector<double> nmmAssembler::nitscheParameters(const Eigen::Matrix2Xd& patc
                    && rule->type != boundaryRule::kind::fixedNormal)) continue;
         const auto& seg = pc_.segments()[i];
         length[fluxElement_[seg.element]] +=
-            currentSegment(currentTriangle(seg.element, patchD), seg).length;
+            currentSegment(space_.currentTriangle(seg.element, patchD), seg).length;
     }
     for (label e = 0; e < label(pc_.nElements()); ++e)
     {
         if (length[e] == 0) continue;
-        const auto T = currentTriangle(e, patchD);
+        const auto T = space_.currentTriangle(e, patchD);
         const double area = std::max
         (
-            currentArea(e, T),
+            space_.currentArea(e, T),
             nitscheAreaFloor*std::abs(manifoldElement::signedArea(T))
         );
         gamma[e] = nitscheSafety*nitscheBound*materials_[e].lambdaMax*length[e]/area;
@@ -323,7 +247,7 @@ std::vector<double> nmmAssembler::nitscheParameters(const Eigen::Matrix2Xd& patc
 
 void nmmAssembler::addSegments
 (
-    const solidState& s,
+    const fieldState& s,
     const Eigen::Matrix2Xd& patchD,
     double t1,
     triplets& K,
@@ -338,7 +262,7 @@ void nmmAssembler::addSegments
         if (!rule || rule->type == boundaryRule::kind::tractionFree) continue;
         const auto& seg = pc_.segments()[i];
         const label e = seg.element;
-        const auto g = currentSegment(currentTriangle(e, patchD), seg);
+        const auto g = currentSegment(space_.currentTriangle(e, patchD), seg);
         if (g.length == 0) continue;
         if (rule->type == boundaryRule::kind::traction)
         {
@@ -377,7 +301,7 @@ void nmmAssembler::addLoad
     Eigen::VectorXd& f
 ) const
 {
-    const auto T0 = referenceTriangle(seg.element);
+    const auto T0 = space_.referenceTriangle(seg.element);
     vector6 fs = vector6::Zero();
     for (int qp = 0; qp < 3; ++qp)
     {
@@ -396,7 +320,7 @@ void nmmAssembler::addCouplingPressure(const Eigen::Matrix2Xd& patchD, Eigen::Ve
         const double p = couplingPressure_[i];
         if (p == 0) continue;
         const auto& seg = pc_.segments()[i];
-        const auto g = currentSegment(currentTriangle(seg.element, patchD), seg);
+        const auto g = currentSegment(space_.currentTriangle(seg.element, patchD), seg);
         if (g.length == 0) continue;
         const Eigen::Vector2d tr = -p*g.normal;
         addLoad(seg, g.length, [&](const Eigen::Vector2d&) { return tr; }, f);
@@ -434,7 +358,7 @@ void nmmAssembler::addNitsche
     const Eigen::Vector2d& normal,
     double t1,
     const std::vector<double>& gamma,
-    const solidState& s,
+    const fieldState& s,
     const Eigen::Matrix2Xd& patchD,
     triplets& K,
     Eigen::VectorXd& f
@@ -442,15 +366,15 @@ void nmmAssembler::addNitsche
 {
     const label e = seg.element;
     const label fe = fluxElement_[e];
-    const auto T0 = referenceTriangle(e);
+    const auto T0 = space_.referenceTriangle(e);
     const double gam = gamma[fe];
 
     // The flux: traction of the flux element's stress and of its dofs
     const matrix23 Pn = tractionMatrix(normal);
     const matrix26 tractionOfD
-        = Pn*materials_[fe].D*manifoldElement::strainMatrix(currentTriangle(fe, patchD));
+        = Pn*materials_[fe].D*manifoldElement::strainMatrix(space_.currentTriangle(fe, patchD));
     const Eigen::Vector2d sigmaN = Pn*startStress(s, fe);
-    const Eigen::VectorXd de = elementDisplacements(e, s.D);
+    const Eigen::VectorXd de = space_.elementDisplacements(e, s.D);
 
     // Projection on what is prescribed: all of u, or its normal part
     const bool normalOnly = rule.type == boundaryRule::kind::fixedNormal;
@@ -483,18 +407,18 @@ void nmmAssembler::addNitsche
 }
 
 
-Eigen::VectorXd nmmAssembler::externalForces(const solidState& s, double t) const
+Eigen::VectorXd nmmAssembler::externalForces(const fieldState& s, double t) const
 {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(Eigen::Index(nUnknowns()));
     addBodyForce(f);
-    const auto patchD = patchDisplacements(s.D);
+    const auto patchD = space_.patchDisplacements(s.D);
     addCouplingPressure(patchD, f);
     for (std::size_t i = 0; i < rules_.size(); ++i)
     {
         const boundaryRule* rule = rules_[i];
         if (!rule || rule->type != boundaryRule::kind::traction) continue;
         const auto& seg = pc_.segments()[i];
-        const auto g = currentSegment(currentTriangle(seg.element, patchD), seg);
+        const auto g = currentSegment(space_.currentTriangle(seg.element, patchD), seg);
         if (g.length == 0) continue;
         addTraction(*rule, seg, g.length, g.normal, t, f);
     }
@@ -521,7 +445,7 @@ void nmmAssembler::buildMass()
 
 nmmAssembler::system nmmAssembler::assemble
 (
-    const solidState& s,
+    const fieldState& s,
     double dt,
     const timeScheme& scheme
 ) const
@@ -531,7 +455,7 @@ nmmAssembler::system nmmAssembler::assemble
     triplets K;
     system sys;
     sys.f = Eigen::VectorXd::Zero(n);
-    const auto patchD = patchDisplacements(s.D);
+    const auto patchD = space_.patchDisplacements(s.D);
     addElements(s, patchD, K, sys.f);
     addBodyForce(sys.f);
     addSegments(s, patchD, t1, K, sys.f);

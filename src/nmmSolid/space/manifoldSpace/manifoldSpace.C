@@ -1,0 +1,127 @@
+#include "nmmSolid/space/manifoldSpace/manifoldSpace.H"
+
+#include "nmmSolid/cover/mathematicalCover/mathematicalCover/mathematicalCover.H"
+
+namespace nmm
+{
+
+using manifoldElement::triangleNodes;
+
+
+manifoldSpace::manifoldSpace
+(
+    const mathematicalCover& cover,
+    const physicalCover& pc,
+    bool updateGeometry
+)
+:
+    cover_(cover),
+    pc_(pc),
+    updateGeometry_(updateGeometry)
+{}
+
+
+std::vector<manifoldSpace::dofTerm> manifoldSpace::dofTerms(label e) const
+{
+    std::vector<dofTerm> terms;
+    for (int k = 0; k < 3; ++k)
+    {
+        const label p = pc_.elements()[e].patches[k];
+        for (auto t = pc_.extensionBegin(p); t != pc_.extensionEnd(p); ++t)
+        {
+            for (int c = 0; c < 2; ++c)
+            {
+                terms.push_back({2*k + c, 2*t->unknownPatch + c, t->coefficient});
+            }
+        }
+    }
+    return terms;
+}
+
+
+Eigen::VectorXd manifoldSpace::elementDisplacements(label e, const Eigen::VectorXd& D) const
+{
+    Eigen::VectorXd de = Eigen::VectorXd::Zero(6);
+    for (const auto& t : dofTerms(e)) de[t.local] += t.coefficient*D[t.dof];
+    return de;
+}
+
+
+Eigen::Matrix2Xd manifoldSpace::patchDisplacements(const Eigen::VectorXd& D) const
+{
+    Eigen::Matrix2Xd d = Eigen::Matrix2Xd::Zero(2, pc_.nPatches());
+    for (label p = 0; p < label(pc_.nPatches()); ++p)
+    {
+        for (auto t = pc_.extensionBegin(p); t != pc_.extensionEnd(p); ++t)
+        {
+            d.col(p) += t->coefficient*D.segment<2>(2*t->unknownPatch);
+        }
+    }
+    return d;
+}
+
+
+triangleNodes manifoldSpace::referenceTriangle(label e) const
+{
+    return physicalCover::triangleOf(cover_, pc_.elements()[e]);
+}
+
+
+triangleNodes manifoldSpace::displacedTriangle
+(
+    label e,
+    const Eigen::Matrix2Xd& patchD
+) const
+{
+    triangleNodes T = referenceTriangle(e);
+    for (int k = 0; k < 3; ++k) T.col(k) += patchD.col(pc_.elements()[e].patches[k]);
+    return T;
+}
+
+
+triangleNodes manifoldSpace::currentTriangle
+(
+    label e,
+    const Eigen::Matrix2Xd& patchD
+) const
+{
+    return updateGeometry_ ? displacedTriangle(e, patchD) : referenceTriangle(e);
+}
+
+
+double manifoldSpace::currentArea(label e, const triangleNodes& T) const
+{
+    // The polygon moves with the linear field of its triangle
+    return pc_.elements()[e].moments.area*manifoldElement::signedArea(T)
+        /manifoldElement::signedArea(referenceTriangle(e));
+}
+
+
+Eigen::Vector2d manifoldSpace::displacement
+(
+    label e,
+    const manifoldElement::baryPoint& lambda,
+    const Eigen::Matrix2Xd& patchD
+) const
+{
+    Eigen::Vector2d u = Eigen::Vector2d::Zero();
+    for (int k = 0; k < 3; ++k) u += lambda[k]*patchD.col(pc_.elements()[e].patches[k]);
+    return u;
+}
+
+
+Eigen::Vector2d manifoldSpace::position
+(
+    label e,
+    const manifoldElement::baryPoint& lambda,
+    const Eigen::Matrix2Xd& patchD
+) const
+{
+    // Summed in this order so that positions are the same to the bit
+    // wherever they are computed
+    Eigen::Vector2d x = manifoldElement::toCartesian(referenceTriangle(e), lambda);
+    for (int k = 0; k < 3; ++k) x += lambda[k]*patchD.col(pc_.elements()[e].patches[k]);
+    return x;
+}
+
+} // End namespace nmm
