@@ -29,6 +29,7 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
+#include "nmmSolid/solver/timeScheme/staticScheme/staticScheme.H"
 
 #include "benchmarkTools.H"
 
@@ -135,7 +136,7 @@ nmm::nmmSolidModel::parts makeParts()
         p.segmentRule.push_back(r);
     }
 
-    p.scheme = timeScheme::staticScheme();
+    p.scheme = std::make_unique<staticScheme>();
     p.solver = cholmod();
     return p;
 }

@@ -1,9 +1,53 @@
 #include "nmmSolid/solver/stepController/stepController.H"
 
 #include <algorithm>
+#include <sstream>
 
 namespace nmm
 {
+
+const keywordTable& stepController::keywords()
+{
+    static const keywordTable table = []
+    {
+        keywordTable t("stepControl", "step size control");
+        t.scalar("maxDisplacementRatio", "largest displacement in a step"
+            " / half the model size", "").defaultValue(0.005).above(0).below(1);
+        t.scalar("maxDeltaT", "largest step", "s").defaultValue(1e-4).above(0);
+        t.scalar("minDeltaT", "smallest step; below it the run stops", "s")
+            .defaultValue(1e-12).above(0).notes("less than maxDeltaT");
+        t.scalar("growth", "factor on the step after an uncut step", "")
+            .defaultValue(1.3).atLeast(1);
+        t.scalar("cutBack", "factor on a step that is cut and redone", "")
+            .defaultValue(0.3).above(0).below(1);
+        return t;
+    }();
+    return table;
+}
+
+
+stepControlSettings stepController::read(const dictionary& d)
+{
+    const keywordTable& k = keywords();
+    k.validate(d);
+    stepControlSettings s;
+    s.maxDisplacementRatio = k.get<double>(d, "maxDisplacementRatio");
+    s.maxDeltaT = k.get<double>(d, "maxDeltaT");
+    s.minDeltaT = k.get<double>(d, "minDeltaT");
+    s.growth = k.get<double>(d, "growth");
+    s.cutBack = k.get<double>(d, "cutBack");
+    if (!(s.minDeltaT < s.maxDeltaT))
+    {
+        const entry* e = d.findEntry("minDeltaT");
+        if (!e) e = d.findEntry("maxDeltaT");
+        std::ostringstream msg;
+        msg << "minDeltaT (" << s.minDeltaT << ") must be less than"
+            " maxDeltaT (" << s.maxDeltaT << ")";
+        throw e->error(msg.str());
+    }
+    return s;
+}
+
 
 stepController::stepController
 (
