@@ -1,9 +1,11 @@
 // system/nmmSolution: the case-format example, the documented defaults,
-// both time schemes, the linear solver's sub-dictionary, and the input
-// errors with their line and keyword.
+// both time schemes, the contact method, the linear solver's
+// sub-dictionary, and the input errors with their line and keyword.
 
-#include "nmmSolid/solver/solutionControls/solutionControls.H"
+#include "nmmSolid/model/solutionControls/solutionControls.H"
+#include "nmmSolid/contact/contactSolver/penaltyOpenClose/penaltyOpenClose.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
+#include "nmmSolid/solver/timeScheme/DDA/DDA.H"
 #include "nmmSolid/solver/linearSolver/linearSolver/linearSolver.H"
 #include "testTools.H"
 
@@ -16,7 +18,6 @@
 using nmm::dictionary;
 using nmm::IOerror;
 using nmm::solutionControls;
-using nmm::timeSchemeType;
 using testing::HasSubstr;
 
 namespace
@@ -52,6 +53,15 @@ IOerror errorReading(const std::string& text)
     return nmm::test::errorOf([&] { read(text); });
 }
 
+//- The contact method's settings as given ("auto" is nullopt)
+nmm::penaltyOpenClose::settings penaltyOf(const solutionControls& c)
+{
+    const auto method = c.newContactSolver();
+    const auto* penalty = dynamic_cast<const nmm::penaltyOpenClose*>(method.get());
+    EXPECT_NE(penalty, nullptr);
+    return penalty ? penalty->given() : nmm::penaltyOpenClose::settings{};
+}
+
 } // End anonymous namespace
 
 
@@ -59,15 +69,17 @@ TEST(solutionControls, caseFormatExample)
 {
     const solutionControls c = read(caseFormatExample);
     EXPECT_TRUE(c.dynamic());
-    EXPECT_EQ(c.timeScheme(), timeSchemeType::DDA);
-    EXPECT_EQ(c.velocityRatio(), 1.0);
-    EXPECT_EQ(c.beta(), 0.5);
-    EXPECT_EQ(c.gamma(), 1.0);
-    EXPECT_EQ(c.contact().method, "penalty");
-    EXPECT_FALSE(c.contact().normalPenalty);
-    EXPECT_FALSE(c.contact().shearPenalty);
-    EXPECT_FALSE(c.contact().searchDistance);
-    EXPECT_EQ(c.contact().maxOpenCloseIterations, 8);
+    const auto scheme = c.newTimeScheme();
+    const auto* dda = dynamic_cast<const nmm::DDA*>(scheme.get());
+    ASSERT_NE(dda, nullptr);
+    EXPECT_EQ(dda->velocityRatio(), 1.0);
+    EXPECT_EQ(dda->beta(), 0.5);
+    EXPECT_EQ(dda->gamma(), 1.0);
+    const auto contact = penaltyOf(c);
+    EXPECT_FALSE(contact.normalPenalty);
+    EXPECT_FALSE(contact.shearPenalty);
+    EXPECT_FALSE(contact.searchDistance);
+    EXPECT_EQ(contact.maxOpenCloseIterations, 8);
     EXPECT_EQ(c.stepControl().maxDisplacementRatio, 0.005);
     EXPECT_EQ(c.stepControl().minDeltaT, 1e-12);
     EXPECT_TRUE(c.largeDisplacement());
@@ -80,14 +92,15 @@ TEST(solutionControls, staticWithDefaults)
 {
     const solutionControls c = read("analysis static;");
     EXPECT_FALSE(c.dynamic());
-    EXPECT_EQ(c.timeScheme(), timeSchemeType::none);
+    EXPECT_FALSE(c.newTimeScheme()->dynamic());
+    EXPECT_EQ(c.newTimeScheme()->name(), "static");
     const auto& s = c.stepControl();
     EXPECT_EQ(s.maxDisplacementRatio, 0.005);
     EXPECT_EQ(s.maxDeltaT, 1e-4);
     EXPECT_EQ(s.minDeltaT, 1e-12);
     EXPECT_EQ(s.growth, 1.3);
     EXPECT_EQ(s.cutBack, 0.3);
-    EXPECT_EQ(c.contact().maxOpenCloseIterations, 8);
+    EXPECT_EQ(penaltyOf(c).maxOpenCloseIterations, 8);
     EXPECT_TRUE(c.largeDisplacement());
     EXPECT_TRUE(c.linearSolverDict().empty());
     EXPECT_NE(nmm::linearSolver::New(c.linearSolverDict()), nullptr);
@@ -98,19 +111,22 @@ TEST(solutionControls, newmarkAndExplicitValues)
 {
     const solutionControls c = read(
         "analysis dynamic; timeScheme { type Newmark; gamma 0.6; }\n"
-        "contact { method augmentedLagrangian; normalPenalty 2e10;"
+        "contact { method penalty; normalPenalty 2e10;"
         " shearPenalty 8e9; searchDistance 1e-4; maxOpenCloseIterations 20; }\n"
         "stepControl { growth 1; cutBack 0.5; maxDeltaT 1e-3; }\n"
         "largeDisplacement no;");
-    EXPECT_EQ(c.timeScheme(), timeSchemeType::Newmark);
-    EXPECT_EQ(c.beta(), 0.25);
-    EXPECT_EQ(c.gamma(), 0.6);
-    EXPECT_EQ(c.velocityRatio(), 1.0);
-    EXPECT_EQ(c.contact().method, "augmentedLagrangian");
-    EXPECT_EQ(*c.contact().normalPenalty, 2e10);
-    EXPECT_EQ(*c.contact().shearPenalty, 8e9);
-    EXPECT_EQ(*c.contact().searchDistance, 1e-4);
-    EXPECT_EQ(c.contact().maxOpenCloseIterations, 20);
+    const auto scheme = c.newTimeScheme();
+    const auto* newmark = dynamic_cast<const nmm::Newmark*>(scheme.get());
+    ASSERT_NE(newmark, nullptr);
+    EXPECT_EQ(newmark->beta(), 0.25);
+    EXPECT_EQ(newmark->gamma(), 0.6);
+    // Newmark scales no velocity: it is not DDA
+    EXPECT_EQ(dynamic_cast<const nmm::DDA*>(scheme.get()), nullptr);
+    const auto contact = penaltyOf(c);
+    EXPECT_EQ(*contact.normalPenalty, 2e10);
+    EXPECT_EQ(*contact.shearPenalty, 8e9);
+    EXPECT_EQ(*contact.searchDistance, 1e-4);
+    EXPECT_EQ(contact.maxOpenCloseIterations, 20);
     EXPECT_EQ(c.stepControl().growth, 1.0);
     EXPECT_EQ(c.stepControl().maxDeltaT, 1e-3);
     EXPECT_FALSE(c.largeDisplacement());
@@ -160,6 +176,21 @@ TEST(solutionControlsErrors, dynamicNeedsTimeScheme)
     const IOerror ddaBeta = errorReading(
         "analysis dynamic;\ntimeScheme { type DDA; velocityRatio 1; beta 0.25; }");
     EXPECT_EQ(ddaBeta.keyword(), "beta");
+}
+
+
+TEST(solutionControlsErrors, contactMethodIsOneThatExists)
+{
+    // A method is refused where it is read, with the ones there are, not
+    // accepted and refused later when the model is built
+    const IOerror err = errorReading(
+        "analysis static;\n\ncontact { method augmentedLagrangian; }");
+    EXPECT_EQ(err.where().line, 3);
+    EXPECT_EQ(err.keyword(), "method");
+    EXPECT_THAT(err.message(), HasSubstr("penalty"));
+    const IOerror value = errorReading(
+        "analysis static;\ncontact { normalPenalty -1; }");
+    EXPECT_EQ(value.keyword(), "normalPenalty");
 }
 
 

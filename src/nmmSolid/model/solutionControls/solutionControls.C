@@ -1,9 +1,9 @@
-#include "nmmSolid/solver/solutionControls/solutionControls.H"
+#include "nmmSolid/model/solutionControls/solutionControls.H"
 
 #include "nmmSolid/global/fatalError/fatalError.H"
+#include "nmmSolid/solver/timeScheme/staticScheme/staticScheme.H"
 
 #include <ostream>
-#include <sstream>
 
 namespace nmm
 {
@@ -11,21 +11,15 @@ namespace nmm
 namespace
 {
 
-//- "auto" (nullopt) or a number > 0; absent is auto
-std::optional<double> autoOrPositive(const dictionary& d, const std::string& key)
+//- A copy of dict's sub-dictionary name, or an empty one
+std::unique_ptr<dictionary> subOrEmpty(const dictionary& dict, const std::string& name)
 {
-    const entry* e = d.findEntry(key);
-    if (!e) return std::nullopt;
-    const tokenList& s = e->isDict() ? tokenList{} : e->stream();
-    if (s.size() == 1 && s[0].isWord("auto")) return std::nullopt;
-    if (s.size() == 1 && s[0].isNumber() && s[0].scalar > 0) return s[0].scalar;
-    throw e->error("'" + key + "' is auto or a number > 0");
+    const dictionary* d = dict.findDict(name);
+    return d ? d->clone() : std::make_unique<dictionary>(name);
 }
 
 } // End anonymous namespace
 
-
-// * * * * * * * * * * * * * * * Keywords  * * * * * * * * * * * * * * * * //
 
 const keywordTable& solutionControls::keywords()
 {
@@ -34,10 +28,10 @@ const keywordTable& solutionControls::keywords()
         keywordTable t("nmmSolution", "how the case is solved (system/nmmSolution)");
         t.word("analysis", "static or dynamic").required()
             .choices({"static", "dynamic"});
-        t.subDict("timeScheme", "{ type DDA; velocityRatio; } or"
-            " { type Newmark; beta; gamma; }").notes("required when dynamic");
+        t.subDict("timeScheme", "{ type <scheme>; ... }, the schemes below")
+            .notes("required when dynamic");
         t.subDict("stepControl", "step size control");
-        t.subDict("contact", "contact iteration");
+        t.subDict("contact", "{ method <method>; ... }, the methods below");
         t.boolean("largeDisplacement", "patch positions move with the blocks"
             " and stresses rotate").defaultValue("yes");
         t.subDict("linearSolver", "linear solver { type cholmod; }");
@@ -47,107 +41,37 @@ const keywordTable& solutionControls::keywords()
 }
 
 
-const keywordTable& solutionControls::DDAKeywords()
-{
-    static const keywordTable table = []
-    {
-        keywordTable t("DDA", "Newmark beta 1/2, gamma 1, with the start"
-            " velocity of a step scaled");
-        t.word("type", "time scheme").required().choices({"DDA", "Newmark"});
-        t.scalar("velocityRatio", "factor on the start velocity of a step:"
-            " 0 static relaxation, 1 all momentum kept", "").required()
-            .range(0, 1);
-        return t;
-    }();
-    return table;
-}
-
-
-const keywordTable& solutionControls::NewmarkKeywords()
-{
-    static const keywordTable table = []
-    {
-        keywordTable t("Newmark", "Newmark-beta time integration");
-        t.word("type", "time scheme").required().choices({"DDA", "Newmark"});
-        t.scalar("beta", "Newmark beta", "").defaultValue(0.25).range(0, 1)
-            .notes("1/4 with gamma 1/2 is the trapezoidal rule; 1 with "
-                   "gamma 3/2 damps the velocity of stiff (contact) modes "
-                   "within a few steps");
-        t.scalar("gamma", "Newmark gamma", "").defaultValue(0.5).range(0.5, 1.5);
-        return t;
-    }();
-    return table;
-}
-
-
-const keywordTable& solutionControls::stepControlKeywords()
-{
-    static const keywordTable table = []
-    {
-        keywordTable t("stepControl", "step size control");
-        t.scalar("maxDisplacementRatio", "largest displacement in a step"
-            " / half the model size", "").defaultValue(0.005).above(0).below(1);
-        t.scalar("maxDeltaT", "largest step", "s").defaultValue(1e-4).above(0);
-        t.scalar("minDeltaT", "smallest step; below it the run stops", "s")
-            .defaultValue(1e-12).above(0).notes("less than maxDeltaT");
-        t.scalar("growth", "factor on the step after an uncut step", "")
-            .defaultValue(1.3).atLeast(1);
-        t.scalar("cutBack", "factor on a step that is cut and redone", "")
-            .defaultValue(0.3).above(0).below(1);
-        return t;
-    }();
-    return table;
-}
-
-
-const keywordTable& solutionControls::contactKeywords()
-{
-    static const keywordTable table = []
-    {
-        keywordTable t("contact", "contact iteration");
-        t.word("method", "enforcement of contact constraints")
-            .choices({"penalty", "augmentedLagrangian"}).defaultValue("penalty");
-        t.any("normalPenalty", "normal spring stiffness [N/m per m of"
-            " thickness]: auto (50 x largest E) or a number > 0")
-            .defaultValue("auto");
-        t.any("shearPenalty", "shear spring stiffness: auto"
-            " (normalPenalty/2.5) or a number > 0").defaultValue("auto");
-        t.integer("maxOpenCloseIterations", "open-close iterations before"
-            " the step is cut and redone").defaultValue(8).atLeast(1);
-        t.any("searchDistance", "contact search distance [m]: auto or a"
-            " number > 0").defaultValue("auto");
-        return t;
-    }();
-    return table;
-}
-
-
 void solutionControls::printHelp(std::ostream& os)
 {
-    for (const keywordTable* t : {&keywords(), &DDAKeywords(), &NewmarkKeywords(),
-        &stepControlKeywords(), &contactKeywords()})
-    {
-        t->printHelp(os);
-        os << "\n";
-    }
+    keywords().printHelp(os);
+    os << "\n";
+    timeScheme::printHelp(os);
+    stepController::keywords().printHelp(os);
+    os << "\n";
+    contactSolver::printHelp(os);
 }
 
-
-// * * * * * * * * * * * * * * * Reading * * * * * * * * * * * * * * * * * //
 
 solutionControls::solutionControls(const dictionary& dict)
 {
     const keywordTable& k = keywords();
     k.validate(dict);
-    analysis_ = k.get<std::string>(dict, "analysis") == "dynamic"
-        ? analysisType::dynamic
-        : analysisType::staticAnalysis;
+    dynamic_ = k.get<std::string>(dict, "analysis") == "dynamic";
     largeDisplacement_ = k.get<bool>(dict, "largeDisplacement");
-    readTimeScheme(dict);
-    readStepControl(dict);
-    readContact(dict);
-    const dictionary* ls = dict.findDict("linearSolver");
-    linearSolverDict_ = ls ? ls->clone() : std::make_unique<dictionary>("linearSolver");
+    // Every part checks its keywords now, not when (or if) it is built
+    if (const dictionary* ts = dict.findDict("timeScheme"))
+    {
+        timeSchemeDict_ = ts->clone();
+        timeScheme::New(*timeSchemeDict_);
+    }
+    else if (dynamic_)
+    {
+        throw k.missing(dict, k.declared("timeScheme"));
+    }
+    step_ = stepController::read(dict.subOrEmptyDict("stepControl"));
+    contactDict_ = subOrEmpty(dict, "contact");
+    contactSolver::New(*contactDict_);
+    linearSolverDict_ = subOrEmpty(dict, "linearSolver");
 }
 
 
@@ -161,70 +85,16 @@ solutionControls solutionControls::read(const std::filesystem::path& file)
 }
 
 
-void solutionControls::readTimeScheme(const dictionary& dict)
+std::unique_ptr<timeScheme> solutionControls::newTimeScheme() const
 {
-    const dictionary* ts = dict.findDict("timeScheme");
-    if (!ts)
-    {
-        if (dynamic())
-        {
-            throw keywords().missing(dict, keywords().declared("timeScheme"));
-        }
-        return;
-    }
-    const entry& typeEntry = ts->lookupEntry("type");
-    const auto type = dictionary::readEntryValue<std::string>(typeEntry);
-    if (type == "DDA")
-    {
-        DDAKeywords().validate(*ts);
-        scheme_ = timeSchemeType::DDA;
-        velocityRatio_ = DDAKeywords().get<double>(*ts, "velocityRatio");
-        beta_ = 0.5;
-        gamma_ = 1;
-    }
-    else
-    {
-        // Also reports an unknown type, with the valid ones
-        NewmarkKeywords().validate(*ts);
-        scheme_ = timeSchemeType::Newmark;
-        beta_ = NewmarkKeywords().get<double>(*ts, "beta");
-        gamma_ = NewmarkKeywords().get<double>(*ts, "gamma");
-    }
+    if (!dynamic_) return std::make_unique<staticScheme>();
+    return timeScheme::New(*timeSchemeDict_);
 }
 
 
-void solutionControls::readStepControl(const dictionary& dict)
+std::unique_ptr<contactSolver> solutionControls::newContactSolver() const
 {
-    const dictionary& d = dict.subOrEmptyDict("stepControl");
-    const keywordTable& k = stepControlKeywords();
-    k.validate(d);
-    step_.maxDisplacementRatio = k.get<double>(d, "maxDisplacementRatio");
-    step_.maxDeltaT = k.get<double>(d, "maxDeltaT");
-    step_.minDeltaT = k.get<double>(d, "minDeltaT");
-    step_.growth = k.get<double>(d, "growth");
-    step_.cutBack = k.get<double>(d, "cutBack");
-    if (!(step_.minDeltaT < step_.maxDeltaT))
-    {
-        const entry* e = d.findEntry("minDeltaT");
-        if (!e) e = d.findEntry("maxDeltaT");
-        std::ostringstream msg;
-        msg << "minDeltaT (" << step_.minDeltaT << ") must be less than"
-            " maxDeltaT (" << step_.maxDeltaT << ")";
-        throw e->error(msg.str());
-    }
-}
-
-
-void solutionControls::readContact(const dictionary& dict)
-{
-    const dictionary& d = dict.subOrEmptyDict("contact");
-    const keywordTable& k = contactKeywords();
-    k.validate(d);
-    contact_.method = k.get<std::string>(d, "method");
-    contact_.normalPenalty = autoOrPositive(d, "normalPenalty");
-    contact_.shearPenalty = autoOrPositive(d, "shearPenalty");
-    contact_.maxOpenCloseIterations = k.get<int>(d, "maxOpenCloseIterations");
-    contact_.searchDistance = autoOrPositive(d, "searchDistance");
+    return contactSolver::New(*contactDict_);
 }
 
 } // End namespace nmm

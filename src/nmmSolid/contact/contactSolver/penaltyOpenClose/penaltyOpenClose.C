@@ -1,0 +1,220 @@
+#include "nmmSolid/contact/contactSolver/penaltyOpenClose/penaltyOpenClose.H"
+
+#include "nmmSolid/global/clock/cpuTime.H"
+#include "nmmSolid/space/manifoldSpace/manifoldSpace.H"
+
+#include <ostream>
+#include <sstream>
+
+namespace nmm
+{
+
+namespace
+{
+
+const bool added = contactSolver::selector::add
+(
+    "penalty",
+    [](const dictionary& d) { return std::make_unique<penaltyOpenClose>(d); },
+    &penaltyOpenClose::keywords()
+);
+
+//- The automatic penalties, as in DDA: stiff against the blocks, so that
+//  contacts barely penetrate, yet not so stiff that the system loses its
+//  digits
+constexpr double normalPenaltyOverModulus = 50;
+constexpr double normalOverShearPenalty = 2.5;
+//- The automatic search distance over the largest displacement a step may
+//  make (maxDisplacementRatio half the model size)
+constexpr double searchOverStep = 2.5;
+//- Deepest penetration a step may end with, over the search distance
+constexpr double penetrationOverSearch = 0.4;
+
+
+//- "auto" (nullopt) or a number > 0; absent is auto
+std::optional<double> autoOrPositive(const dictionary& d, const std::string& key)
+{
+    const entry* e = d.findEntry(key);
+    if (!e) return std::nullopt;
+    const tokenList& s = e->isDict() ? tokenList{} : e->stream();
+    if (s.size() == 1 && s[0].isWord("auto")) return std::nullopt;
+    if (s.size() == 1 && s[0].isNumber() && s[0].scalar > 0) return s[0].scalar;
+    throw e->error("'" + key + "' is auto or a number > 0");
+}
+
+
+void addTime(const contactSolver::services& s, const char* part, const cpuTime& clock)
+{
+    if (s.timing) (*s.timing)[part] += clock.elapsed();
+}
+
+} // End anonymous namespace
+
+
+const keywordTable& penaltyOpenClose::keywords()
+{
+    static const keywordTable table = []
+    {
+        keywordTable t("penalty", "penalty springs and the open-close"
+            " iteration (contact { method penalty; })");
+        declareMethod(t);
+        t.any("normalPenalty", "normal spring stiffness [N/m per m of"
+            " thickness]: auto (50 x largest E) or a number > 0")
+            .defaultValue("auto");
+        t.any("shearPenalty", "shear spring stiffness: auto"
+            " (normalPenalty/2.5) or a number > 0").defaultValue("auto");
+        t.integer("maxOpenCloseIterations", "open-close iterations before"
+            " the step is cut and redone").defaultValue(8).atLeast(1);
+        t.any("searchDistance", "contact search distance [m]: auto"
+            " (2.5 maxDisplacementRatio x half the model size) or a number > 0")
+            .defaultValue("auto");
+        return t;
+    }();
+    return table;
+}
+
+
+penaltyOpenClose::penaltyOpenClose(const dictionary& d)
+{
+    const keywordTable& k = keywords();
+    k.validate(d);
+    given_.normalPenalty = autoOrPositive(d, "normalPenalty");
+    given_.shearPenalty = autoOrPositive(d, "shearPenalty");
+    given_.maxOpenCloseIterations = k.get<int>(d, "maxOpenCloseIterations");
+    given_.searchDistance = autoOrPositive(d, "searchDistance");
+}
+
+
+void penaltyOpenClose::setUp(problem p)
+{
+    space_ = p.space;
+    halfSize_ = p.halfSize;
+    maxDisplacementRatio_ = p.maxDisplacementRatio;
+    dynamic_ = p.dynamic;
+
+    contactModel::settings s;
+    s.normalPenalty =
+        given_.normalPenalty.value_or(normalPenaltyOverModulus*p.largestModulus);
+    s.shearPenalty = given_.shearPenalty.value_or(s.normalPenalty/normalOverShearPenalty);
+    s.searchDistance =
+        given_.searchDistance.value_or(searchOverStep*p.maxDisplacementRatio*p.halfSize);
+    s.touchTolerance = 1e-6*s.searchDistance;
+    penetrationLimit_ = penetrationOverSearch*s.searchDistance;
+    s.overlapRelief = 0.1*penetrationLimit_;
+    contacts_ = std::make_unique<contactModel>
+    (
+        *p.space, *p.geometry, std::move(*p.laws), std::move(p.materialOfBlock), s,
+        p.thickness
+    );
+}
+
+
+bool penaltyOpenClose::solve
+(
+    const nmmAssembler::system& sys,
+    const Eigen::Matrix2Xd& patchD0,
+    const std::vector<contactRecord>& history,
+    bool atStart,
+    const services& srv,
+    stepReport& report,
+    Eigen::VectorXd& dd
+)
+{
+    const long n = long(sys.f.size());
+    cpuTime clock;
+    contacts_->beginStep(patchD0, history, atStart);
+    addTime(srv, "contact detection", clock);
+    const Eigen::VectorXd loads = sys.f + contacts_->pressureLoads(n);
+    clock = cpuTime();
+    const sparseMatrix pattern = contacts_->withPattern(sys.K);
+    addTime(srv, "contact assembly", clock);
+
+    bool settled = false;
+    // Contacts that open and close in turn make the iteration damped from
+    // then on: each solve's increment is taken only as far as it lowers
+    // the step's potential, which cannot cycle
+    bool damped = false;
+    dd = Eigen::VectorXd::Zero(n);
+    for (int it = 1; it <= given_.maxOpenCloseIterations && !settled; ++it)
+    {
+        clock = cpuTime();
+        sparseMatrix K = pattern;
+        contacts_->addSprings(K);
+        const Eigen::VectorXd f = loads + contacts_->forces(n);
+        addTime(srv, "contact assembly", clock);
+
+        const Eigen::VectorXd delta = srv.solve(K, f) - dd;
+
+        clock = cpuTime();
+        double alpha = 1;
+        if (damped)
+        {
+            const Eigen::VectorXd Kdelta = sys.K*delta;
+            alpha = contacts_->stepLength
+            (
+                dd, delta, delta.dot(Kdelta), Kdelta.dot(dd) - delta.dot(loads)
+            );
+        }
+        dd += alpha*delta;
+        const auto counts = contacts_->update(dd);
+        damped = damped || counts.chattering > 0;
+        addTime(srv, "contact update", clock);
+        report.iterations = it;
+        report.contacts = counts.states;
+        report.bondsBroken += counts.bondsBroken;
+        logIteration(srv.log, it, counts, alpha);
+        settled = alpha == 1 && counts.changes == 0 && counts.frictionSettled();
+    }
+
+    report.maxPenetration = contacts_->maxPenetration();
+    report.overlapsAtStart = contacts_->overlapsAtStart();
+    const auto patchDD = space_->patchDisplacements(dd);
+    report.displacementRatio = patchDD.cols()
+        ? patchDD.colwise().norm().maxCoeff()/halfSize_ : 0.0;
+    report.cutReason = cutReason(settled, report);
+    return report.cutReason.empty();
+}
+
+
+std::string penaltyOpenClose::cutReason(bool settled, const stepReport& report) const
+{
+    std::ostringstream why;
+    if (!settled)
+    {
+        why << "the open-close iteration did not settle in "
+            << given_.maxOpenCloseIterations << " iterations";
+    }
+    else if (contacts_->maxPenetrationGrowth() > penetrationLimit_)
+    {
+        why << "penetration " << contacts_->maxPenetrationGrowth()
+            << " m exceeds the limit " << penetrationLimit_ << " m";
+    }
+    else if (dynamic_ && report.displacementRatio > maxDisplacementRatio_)
+    {
+        why << "displacement ratio " << report.displacementRatio
+            << " exceeds maxDisplacementRatio " << maxDisplacementRatio_;
+    }
+    return why.str();
+}
+
+
+void penaltyOpenClose::logIteration
+(
+    std::ostream* log,
+    int it,
+    const contactModel::iterationCounts& c,
+    double stepLength
+) const
+{
+    if (!log) return;
+    *log << "    open-close " << it << ": open " << c.states[0]
+        << ", bonded " << c.states[1] << ", sliding " << c.states[2]
+        << "; changes " << c.changes;
+    if (c.frictionUpdates) *log << ", friction updates " << c.frictionUpdates;
+    if (c.chattering) *log << ", chattering " << c.chattering;
+    if (c.bondsBroken) *log << ", bonds broken " << c.bondsBroken;
+    if (stepLength < 1) *log << ", step length " << stepLength;
+    *log << '\n';
+}
+
+} // End namespace nmm
