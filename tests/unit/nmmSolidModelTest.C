@@ -6,6 +6,7 @@
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/case/caseFolder/caseFolder.H"
 #include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
+#include "nmmSolid/solver/timeScheme/staticScheme/staticScheme.H"
 #include "nmmSolid/output/solidOutput/solidOutput.H"
 
 #include "modelCase.H"
@@ -260,7 +261,7 @@ TEST(nmmSolidModel, floatingBlockIsNamed)
 //  (max |lambda|/min |lambda|, negative when the matrix is indefinite)
 double scaledConditionNumber(const nmmSolidModel& m)
 {
-    const auto sys = m.assembler().assemble(m.state(), 1, nm::timeScheme::staticScheme());
+    const auto sys = m.assembler().assemble(m.state(), 1, nm::staticScheme());
     const Eigen::MatrixXd K(sys.K);
     const Eigen::VectorXd s = K.diagonal().cwiseSqrt().cwiseInverse();
     const Eigen::MatrixXd Ks = s.asDiagonal()*K*s.asDiagonal();

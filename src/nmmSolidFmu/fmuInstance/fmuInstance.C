@@ -2,7 +2,7 @@
 
 #include "nmmSolid/io/case/caseFolder/caseFolder.H"
 #include "nmmSolid/output/solidOutput/solidOutput.H"
-#include "nmmSolid/solver/stepController/stepController.H"
+#include "nmmSolid/model/stepDriver/stepDriver.H"
 
 #include <algorithm>
 #include <cmath>
@@ -438,35 +438,17 @@ void fmuInstance::doStep(double t, double h)
         throw fmuError("communicationStepSize must be positive and finite, got " + text(h));
     }
     const stepControlSettings settings = model_->controls()
-        ? model_->controls()->stepControl() : stepControlSettings{};
-    stepController steps(settings, h, model_->scheme().dynamic());
-    const double tEnd = t0 + h;
-    while (tEnd - solid_->time() > 1e-12*h)
+        ? model_->controls()->stepControl() : stepController::read(dictionary("stepControl"));
+    // A driver per communication step, so that a step repeated after
+    // fmi3SetFMUState starts from the same step length
+    stepDriver driver(*solid_, settings, h, model_->scheme().dynamic());
+    driver.setLog(log_, true);
+    const stepDriver::outcome done = driver.advanceTo(t0 + h);
+    if (!done)
     {
-        double dt = steps.next(tEnd - solid_->time());
-        const solidState saved = solid_->saveState();
-        for (;;)
-        {
-            solid_->setDeltaT(dt);
-            log_ << "step from " << solid_->time() << " by " << dt << '\n';
-            const stepReport report = solid_->solveStep();
-            if (report.converged)
-            {
-                steps.accepted(dt, report.displacementRatio);
-                break;
-            }
-            solid_->restoreState(saved);
-            const auto shorter = report.cutIsFutile ? std::nullopt : steps.cut(dt);
-            log_ << "    step cut: " << report.cutReason << '\n';
-            if (!shorter)
-            {
-                flushLog();
-                throw fmuDiscard("the solid cannot step from " + text(solid_->time())
-                    + ": " + report.cutReason, solid_->time());
-            }
-            dt = *shorter;
-        }
-        solid_->acceptStep();
+        flushLog();
+        throw fmuDiscard("the solid cannot step from " + text(solid_->time())
+            + ": " + done.cutReason, solid_->time());
     }
     // The importer sees the arrays after the step, not between its steps
     checkCapacity();

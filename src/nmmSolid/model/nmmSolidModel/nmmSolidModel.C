@@ -3,6 +3,7 @@
 #include "nmmSolid/global/clock/cpuTime.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/dictionary/IOerror.H"
+#include "nmmSolid/solver/timeScheme/staticScheme/staticScheme.H"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
@@ -51,7 +52,7 @@ std::vector<nmmAssembler::elementMaterial> nmmSolidModel::elementMaterials() con
     {
         auto& em = perMaterial[m];
         em.D = props.elasticityMatrix(m);
-        if (parts_.scheme.dynamic()) em.rho = props.material(m).density();
+        if (parts_.scheme->dynamic()) em.rho = props.material(m).density();
         // Plane strain: sigma_zz = nu (sigma_xx + sigma_yy), and D01/D00 = nu/(1 - nu)
         em.zzFactor = props.planeStress() ? 0 : em.D(0, 1)/(em.D(0, 0) + em.D(0, 1));
         em.lambdaMax = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(em.D)
@@ -79,6 +80,7 @@ nmmSolidModel::nmmSolidModel(parts p)
 :
     parts_(std::move(p))
 {
+    if (!parts_.scheme) parts_.scheme = std::make_unique<staticScheme>();
     for (const auto& b : parts_.geometry->blocks())
     {
         materialOfBlock_.push_back(parts_.properties->materialId(b.material(), b.where()));
@@ -88,13 +90,16 @@ nmmSolidModel::nmmSolidModel(parts p)
     {
         rules.push_back(r < 0 ? nullptr : &parts_.rules[r]);
     }
+    space_ = std::make_unique<manifoldSpace>
+    (
+        *parts_.cover, *parts_.elements, parts_.largeDisplacement
+    );
     assembler_ = std::make_unique<nmmAssembler>
     (
-        *parts_.cover, *parts_.elements, elementMaterials(),
-        parts_.properties->thickness(), std::move(rules), parts_.gravity,
-        parts_.largeDisplacement
+        *space_, elementMaterials(), parts_.properties->thickness(), std::move(rules),
+        parts_.gravity
     );
-    if (parts_.scheme.dynamic())
+    if (parts_.scheme->dynamic())
     {
         const cpuTime clock;
         assembler_->buildMass();
@@ -104,34 +109,30 @@ nmmSolidModel::nmmSolidModel(parts p)
     const Eigen::Vector2d side = parts_.geometry->bounds().sizes();
     halfSize_ = 0.5*side.maxCoeff();
     if (parts_.contacts) createContacts();
+    else parts_.contactMethod.reset();
 }
 
 
 void nmmSolidModel::createContacts()
 {
-    const contactSettings cs = parts_.controls ? parts_.controls->contact() : contactSettings();
-    const stepControlSettings sc =
-        parts_.controls ? parts_.controls->stepControl() : stepControlSettings();
-    double largestModulus = 0;
-    for (std::size_t m = 0; m < parts_.properties->size(); ++m)
+    largestModulus_ = parts_.properties->largestE();
+    if (!parts_.contactMethod)
     {
-        largestModulus =
-            std::max(largestModulus, parts_.properties->material(m).stiffnessModulus());
+        parts_.contactMethod = contactSolver::New(dictionary("contact"));
     }
-    contactModel::settings s;
-    s.normalPenalty = cs.normalPenalty.value_or(50*largestModulus);
-    largestModulus_ = largestModulus;
-    s.shearPenalty = cs.shearPenalty.value_or(s.normalPenalty/2.5);
-    s.searchDistance = cs.searchDistance.value_or(2.5*sc.maxDisplacementRatio*halfSize_);
-    s.touchTolerance = 1e-6*s.searchDistance;
-    penetrationLimit_ = 0.4*s.searchDistance;
-    s.overlapRelief = 0.1*penetrationLimit_;
-    contacts_ = std::make_unique<contactModel>
-    (
-        *parts_.cover, *parts_.elements, *parts_.geometry, *assembler_,
-        std::move(*parts_.contacts), materialOfBlock_, s,
-        parts_.properties->thickness()
-    );
+    contactSolver::problem p;
+    p.space = space_.get();
+    p.geometry = parts_.geometry.get();
+    p.laws = std::move(parts_.contacts);
+    p.materialOfBlock = materialOfBlock_;
+    p.thickness = parts_.properties->thickness();
+    p.largestModulus = largestModulus_;
+    p.halfSize = halfSize_;
+    p.maxDisplacementRatio = parts_.controls
+        ? parts_.controls->stepControl().maxDisplacementRatio
+        : stepController::read(dictionary("stepControl")).maxDisplacementRatio;
+    p.dynamic = parts_.scheme->dynamic();
+    parts_.contactMethod->setUp(std::move(p));
 }
 
 
@@ -146,7 +147,7 @@ void nmmSolidModel::initialiseAcceleration()
 {
     // Newmark's update uses A0; at the start it is M^-1 of the loads out of
     // balance (gravity on a free body), not zero
-    const auto sys = assembler_->assemble(state_, 0, timeScheme::staticScheme());
+    const auto sys = assembler_->assemble(state_, 0, staticScheme());
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> massSolver(assembler_->mass());
     if (massSolver.info() == Eigen::Success)
     {
@@ -157,7 +158,7 @@ void nmmSolidModel::initialiseAcceleration()
 
 stepReport nmmSolidModel::solveStep(double dt)
 {
-    if (parts_.scheme.dynamic() && parts_.scheme.accelerationFactor() != 0
+    if (parts_.scheme->dynamic() && parts_.scheme->accelerationFactor() != 0
      && state_.timeIndex == 0 && state_.A.isZero())
     {
         const cpuTime clock;
@@ -167,30 +168,20 @@ stepReport nmmSolidModel::solveStep(double dt)
 
     const cpuTime clock;
     assembler_->setTemperatureIncrement(elementTemperatureIncrement());
-    const auto sys = assembler_->assemble(state_, dt, parts_.scheme);
+    const auto sys = assembler_->assemble(state_, dt, *parts_.scheme);
     timing_["assembly"] += clock.elapsed();
 
     stepReport report;
     report.deltaT = dt;
     report.cuts = cuts_;
     Eigen::VectorXd dd;
-    if (!contacts_)
+    if (!parts_.contactMethod)
     {
         dd = solveSystem(sys.K, sys.f, dt);
     }
     else if (!solveWithContacts(sys, dt, report, dd))
     {
-        report.converged = false;
-        if (!parts_.scheme.dynamic())
-        {
-            // Without mass the step's length enters only through the
-            // loads' time dependence
-            report.cutIsFutile = failedLoads_.size() == sys.f.size()
-                && (sys.f - failedLoads_).norm() <= 1e-12*sys.f.norm();
-            failedLoads_ = sys.f;
-        }
-        ++cuts_;
-        trialReady_ = false;
+        reportCut(sys, report);
         return report;
     }
     updateTrial(dd, dt);
@@ -215,7 +206,7 @@ Eigen::VectorXd nmmSolidModel::solveSystem
     {
         // The mass term makes a dynamic system positive definite in exact
         // arithmetic: a zero pivot there is rounding, not a free block
-        if (parts_.scheme.dynamic())
+        if (parts_.scheme->dynamic())
         {
             std::ostringstream os;
             os << "the system of the step to time " << state_.time + dt
@@ -228,7 +219,7 @@ Eigen::VectorXd nmmSolidModel::solveSystem
             }
             os << ". Inertia holds every block of a dynamic analysis, so this"
                 " is rounding: ";
-            if (contacts_)
+            if (contacts())
             {
                 os << penaltyAgainstModulus()
                     << "; lower normalPenalty (system/nmmSolution contact)";
@@ -275,84 +266,34 @@ bool nmmSolidModel::solveWithContacts
     Eigen::VectorXd& dd
 )
 {
-    const long n = long(sys.f.size());
-    cpuTime clock;
-    contacts_->beginStep
+    contactSolver::services services;
+    services.solve = [this, dt](const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& f)
+    {
+        return solveSystem(K, f, dt);
+    };
+    services.timing = &timing_;
+    services.log = log_;
+    return parts_.contactMethod->solve
     (
-        assembler_->patchDisplacements(state_.D), state_.contacts, state_.timeIndex == 0
+        sys, space_->patchDisplacements(state_.D), state_.contacts,
+        state_.timeIndex == 0, services, report, dd
     );
-    timing_["contact detection"] += clock.elapsed();
-    const Eigen::VectorXd loads = sys.f + contacts_->pressureLoads(n);
-    clock = cpuTime();
-    const Eigen::SparseMatrix<double> pattern = contacts_->withPattern(sys.K);
-    timing_["contact assembly"] += clock.elapsed();
+}
 
-    const int maxIterations = parts_.controls
-        ? parts_.controls->contact().maxOpenCloseIterations : contactSettings().maxOpenCloseIterations;
-    bool settled = false;
-    // Contacts that open and close in turn make the iteration damped from
-    // then on: each solve's increment is taken only as far as it lowers
-    // the step's potential, which cannot cycle
-    bool damped = false;
-    dd = Eigen::VectorXd::Zero(n);
-    for (int it = 1; it <= maxIterations && !settled; ++it)
+
+void nmmSolidModel::reportCut(const nmmAssembler::system& sys, stepReport& report)
+{
+    report.converged = false;
+    if (!parts_.scheme->dynamic())
     {
-        clock = cpuTime();
-        Eigen::SparseMatrix<double> K = pattern;
-        contacts_->addSprings(K);
-        const Eigen::VectorXd f = loads + contacts_->forces(n);
-        timing_["contact assembly"] += clock.elapsed();
-
-        const Eigen::VectorXd delta = solveSystem(K, f, dt) - dd;
-
-        clock = cpuTime();
-        double alpha = 1;
-        if (damped)
-        {
-            const Eigen::VectorXd Kdelta = sys.K*delta;
-            alpha = contacts_->stepLength
-            (
-                dd, delta, delta.dot(Kdelta), Kdelta.dot(dd) - delta.dot(loads)
-            );
-        }
-        dd += alpha*delta;
-        const auto counts = contacts_->update(dd);
-        damped = damped || counts.chattering > 0;
-        timing_["contact update"] += clock.elapsed();
-        report.iterations = it;
-        report.contacts = counts.states;
-        report.bondsBroken += counts.bondsBroken;
-        logIteration(it, counts, alpha);
-        settled = alpha == 1 && counts.changes == 0 && counts.frictionSettled();
+        // Without mass the step's length enters only through the loads'
+        // time dependence
+        report.cutIsFutile = failedLoads_.size() == sys.f.size()
+            && (sys.f - failedLoads_).norm() <= 1e-12*sys.f.norm();
+        failedLoads_ = sys.f;
     }
-
-    report.maxPenetration = contacts_->maxPenetration();
-    report.overlapsAtStart = contacts_->overlapsAtStart();
-    const auto patchDD = assembler_->patchDisplacements(dd);
-    report.displacementRatio = patchDD.cols()
-        ? patchDD.colwise().norm().maxCoeff()/halfSize_ : 0.0;
-    const double maxRatio = parts_.controls
-        ? parts_.controls->stepControl().maxDisplacementRatio
-        : stepControlSettings().maxDisplacementRatio;
-
-    std::ostringstream why;
-    if (!settled)
-    {
-        why << "the open-close iteration did not settle in " << maxIterations
-            << " iterations";
-    }
-    else if (contacts_->maxPenetrationGrowth() > penetrationLimit_)
-    {
-        why << "penetration " << contacts_->maxPenetrationGrowth()
-            << " m exceeds the limit " << penetrationLimit_ << " m";
-    }
-    else if (parts_.scheme.dynamic() && report.displacementRatio > maxRatio)
-    {
-        why << "displacement ratio " << report.displacementRatio
-            << " exceeds maxDisplacementRatio " << maxRatio;
-    }
-    report.cutReason = why.str();
-    return report.cutReason.empty();
+    ++cuts_;
+    trialReady_ = false;
 }
 
 
@@ -368,14 +309,14 @@ void nmmSolidModel::checkConditioning(double dt)
         << " > " << limit << ", about "
         << std::max(0, int(std::floor(-std::log10(ratio*1e-16))))
         << " significant digits left";
-    if (contacts_) *log_ << "; " << penaltyAgainstModulus();
+    if (contacts()) *log_ << "; " << penaltyAgainstModulus();
     *log_ << " (reported once)\n";
 }
 
 
 std::string nmmSolidModel::penaltyAgainstModulus() const
 {
-    const double penalty = contacts_->parameters().normalPenalty;
+    const double penalty = contacts()->parameters().normalPenalty;
     std::ostringstream os;
     os << "the normal penalty " << penalty << " is " << penalty/largestModulus_
         << " times the largest modulus " << largestModulus_;
@@ -386,7 +327,7 @@ std::string nmmSolidModel::penaltyAgainstModulus() const
 void nmmSolidModel::setInitialVelocity(const initialVelocity& U)
 {
     if (!U.active()) return;
-    if (!parts_.scheme.dynamic())
+    if (!parts_.scheme->dynamic())
     {
         throw IOerror("an initial velocity is given, but the analysis is"
             " static (system/nmmSolution): remove the U file or use a"
@@ -403,39 +344,20 @@ void nmmSolidModel::setInitialVelocity(const initialVelocity& U)
 }
 
 
-void nmmSolidModel::logIteration
-(
-    int it,
-    const contactModel::iterationCounts& c,
-    double stepLength
-) const
-{
-    if (!log_) return;
-    *log_ << "    open-close " << it << ": open " << c.states[0]
-        << ", bonded " << c.states[1] << ", sliding " << c.states[2]
-        << "; changes " << c.changes;
-    if (c.frictionUpdates) *log_ << ", friction updates " << c.frictionUpdates;
-    if (c.chattering) *log_ << ", chattering " << c.chattering;
-    if (c.bondsBroken) *log_ << ", bonds broken " << c.bondsBroken;
-    if (stepLength < 1) *log_ << ", step length " << stepLength;
-    *log_ << '\n';
-}
-
-
 void nmmSolidModel::updateTrial(const Eigen::VectorXd& dd, double dt)
 {
     const cpuTime clock;
     trial_ = state_;
     trial_.time = state_.time + dt;
     ++trial_.timeIndex;
-    const auto patchD0 = assembler_->patchDisplacements(state_.D);
-    const auto dPatch = assembler_->patchDisplacements(dd);
+    const auto patchD0 = space_->patchDisplacements(state_.D);
+    const auto dPatch = space_->patchDisplacements(dd);
     std::vector<double> rotations;
     updateStresses(patchD0, dPatch, rotations);
     if (!temperature_.empty()) trial_.temperature = temperature_;
     updateMotion(dd, dt);
     if (parts_.largeDisplacement) correctRotations(patchD0, rotations);
-    if (contacts_) trial_.contacts = contacts_->records();
+    if (contacts()) trial_.contacts = contacts()->records();
     trialReady_ = true;
     timing_["update"] += clock.elapsed();
 }
@@ -453,7 +375,7 @@ void nmmSolidModel::updateStresses
     const std::vector<double> dTemperature = elementTemperatureIncrement();
     for (std::size_t e = 0; e < els.size(); ++e)
     {
-        const auto T = assembler_->currentTriangle(label(e), patchD0);
+        const auto T = space_->currentTriangle(label(e), patchD0);
         const auto B = manifoldElement::strainMatrix(T);
         manifoldElement::vector6 de;
         for (int k = 0; k < 3; ++k) de.segment<2>(2*k) = dPatch.col(els[e].patches[k]);
@@ -476,13 +398,7 @@ void nmmSolidModel::updateStresses
 void nmmSolidModel::updateMotion(const Eigen::VectorXd& dd, double dt)
 {
     trial_.D = state_.D + dd;
-    const timeScheme& ts = parts_.scheme;
-    if (!ts.dynamic()) return;
-    const Eigen::VectorXd& V0 = state_.V;
-    const Eigen::VectorXd& A0 = state_.A;
-    trial_.A = (dd - dt*V0 - dt*dt*(0.5 - ts.beta)*A0)/(ts.beta*dt*dt);
-    trial_.V = V0 + dt*((1 - ts.gamma)*A0 + ts.gamma*trial_.A);
-    if (ts.type == timeScheme::kind::DDA) trial_.V *= ts.velocityRatio;
+    parts_.scheme->update(dd, dt, state_.V, state_.A, trial_.V, trial_.A);
 }
 
 
@@ -501,7 +417,7 @@ void nmmSolidModel::correctRotations
     std::vector<double> patchW(pc.nPatches(), 0.0), patchArea(pc.nPatches(), 0.0);
     for (std::size_t e = 0; e < els.size(); ++e)
     {
-        const auto T = assembler_->currentTriangle(label(e), patchD0);
+        const auto T = space_->currentTriangle(label(e), patchD0);
         const double a = els[e].moments.area;
         moment[els[e].block] += T*els[e].moments.w;
         blockArea[els[e].block] += a;
@@ -524,7 +440,7 @@ void nmmSolidModel::correctRotations
         const Eigen::Vector2d x = parts_.cover->nodes()[pc.patches()[p].node] + patchD0.col(p);
         const Eigen::Vector2d c = moment[b]/blockArea[b];
         trial_.D.segment<2>(2*u) += (R - Eigen::Matrix2d::Identity() - W)*(x - c);
-        if (parts_.scheme.dynamic())
+        if (parts_.scheme->dynamic())
         {
             trial_.V.segment<2>(2*u) = R*trial_.V.segment<2>(2*u);
         }
@@ -548,13 +464,11 @@ void nmmSolidModel::acceptStep()
 
 std::vector<contactRecord> nmmSolidModel::upcomingContacts()
 {
-    if (!contacts_) return {};
-    // The same search solveStep() starts with, so the same contacts
-    contacts_->beginStep
+    if (!parts_.contactMethod) return {};
+    return parts_.contactMethod->upcoming
     (
-        assembler_->patchDisplacements(state_.D), state_.contacts, state_.timeIndex == 0
+        space_->patchDisplacements(state_.D), state_.contacts, state_.timeIndex == 0
     );
-    return contacts_->records();
 }
 
 
@@ -630,13 +544,13 @@ void nmmSolidModel::restoreState(const solidState& s)
 
 Eigen::Matrix2Xd nmmSolidModel::patchDisplacements() const
 {
-    return assembler_->patchDisplacements(state_.D);
+    return space_->patchDisplacements(state_.D);
 }
 
 
 Eigen::Matrix2Xd nmmSolidModel::patchVelocities() const
 {
-    return assembler_->patchDisplacements(state_.V);
+    return space_->patchDisplacements(state_.V);
 }
 
 
@@ -647,8 +561,8 @@ std::vector<double> nmmSolidModel::blockAreas() const
     const auto& els = parts_.elements->elements();
     for (std::size_t e = 0; e < els.size(); ++e)
     {
-        const auto T = assembler_->currentTriangle(label(e), patchD);
-        area[els[e].block] += assembler_->currentArea(label(e), T);
+        const auto T = space_->currentTriangle(label(e), patchD);
+        area[els[e].block] += space_->currentArea(label(e), T);
     }
     return area;
 }

@@ -49,43 +49,13 @@ boundaryRule ruleOf(const patchCondition& c, const blockGeometry& geometry)
 }
 
 
-//- One rule per condition; each segment refers to the rule of its patch
-void setRules(nmmSolidModel::parts& p)
-{
-    std::map<const patchCondition*, int> index;
-    for (const auto& c : p.conditions->conditions())
-    {
-        index[&c] = int(p.rules.size());
-        p.rules.push_back(ruleOf(c, *p.geometry));
-    }
-    for (const auto& s : p.elements->segments())
-    {
-        const patchCondition* c = s.kind == physicalCover::segmentKind::blockEdge
-            ? p.conditions->condition(s.edge)
-            : p.conditions->condition(s.face);
-        p.segmentRule.push_back(c ? index.at(c) : -1);
-    }
-}
-
-
-timeScheme schemeOf(const solutionControls& controls)
-{
-    if (!controls.dynamic()) return timeScheme::staticScheme();
-    if (controls.timeScheme() == timeSchemeType::DDA)
-    {
-        return timeScheme::DDA(controls.velocityRatio());
-    }
-    return timeScheme::Newmark(controls.beta(), controls.gamma());
-}
-
 //- The contact laws when bodies can touch: two blocks or more, or a joint
 //  (its faces close); a single block builds no contact machinery
 std::unique_ptr<contactProperties> readContacts
 (
     const caseFolder& runCase,
     const blockGeometry& geometry,
-    const mechanicalProperties& props,
-    const solutionControls& controls
+    const mechanicalProperties& props
 )
 {
     if (geometry.nBlocks() < 2 && geometry.nJoints() == 0) return nullptr;
@@ -100,18 +70,32 @@ std::unique_ptr<contactProperties> readContacts
             "touch and need a contact law (see nmmSolidFoam -help)"
         );
     }
-    if (controls.contact().method != "penalty")
-    {
-        throw fatalError
-        (
-            runCase.system().string() + "/nmmSolution: contact method '"
-            + controls.contact().method + "' is not available yet; use penalty"
-        );
-    }
     return std::make_unique<contactProperties>(contactProperties::read(file, props.names()));
 }
 
 } // End anonymous namespace
+
+
+void nmmSolidModel::parts::setConditions(std::unique_ptr<boundaryConditions> bc)
+{
+    // One rule per condition; each segment refers to the rule of its patch
+    conditions = std::move(bc);
+    rules.clear();
+    segmentRule.clear();
+    std::map<const patchCondition*, int> index;
+    for (const auto& c : conditions->conditions())
+    {
+        index[&c] = int(rules.size());
+        rules.push_back(ruleOf(c, *geometry));
+    }
+    for (const auto& s : elements->segments())
+    {
+        const patchCondition* c = s.kind == physicalCover::segmentKind::blockEdge
+            ? conditions->condition(s.edge)
+            : conditions->condition(s.face);
+        segmentRule.push_back(c ? index.at(c) : -1);
+    }
+}
 
 
 std::unique_ptr<nmmSolidModel> nmmSolidModel::New
@@ -136,20 +120,20 @@ std::unique_ptr<nmmSolidModel> nmmSolidModel::New
     (
         solutionControls::read(runCase.system()/"nmmSolution")
     );
-    p.scheme = schemeOf(*p.controls);
+    p.scheme = p.controls->newTimeScheme();
     p.largeDisplacement = p.controls->largeDisplacement();
     p.solver = linearSolver::New(p.controls->linearSolverDict());
 
-    p.conditions = std::make_unique<boundaryConditions>
+    p.setConditions(std::make_unique<boundaryConditions>
     (
         boundaryConditions::read(runCase.timePath(startTimeName)/"D", *p.geometry)
-    );
-    setRules(p);
+    ));
 
     const gravity g = gravity::read(runCase.constant()/"g");
     if (g.active()) p.gravity = g.value();
 
-    p.contacts = readContacts(runCase, *p.geometry, *p.properties, *p.controls);
+    p.contacts = readContacts(runCase, *p.geometry, *p.properties);
+    if (p.contacts) p.contactMethod = p.controls->newContactSolver();
 
     auto model = std::make_unique<nmmSolidModel>(std::move(p));
     model->setInitialVelocity
