@@ -4,9 +4,9 @@ Description
     handling of applications (nmm::catchFatalErrors).
 \*---------------------------------------------------------------------------*/
 
-#include "nmmSolid/global/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/global/version.H"
+#include "nmmSolid/io/argList/argList.H"
 #include "nmmSolid/io/case/Time/Time.H"
 #include "nmmSolid/io/dictionary/IOerror.H"
 #include "nmmSolid/solver/linearSolver/singularSystem/singularSystem.H"
