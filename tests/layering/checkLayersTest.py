@@ -26,9 +26,10 @@ def expect(condition, what, output):
         failures.append(f"{what}\n--- output:\n{output}---")
 
 
-def library(scratch, name, layers, files):
-    """A library folder <scratch>/<name>/src/nmmSolid with these files
-    ({relative path: text}) and a layers file listing these folders"""
+def checkLibrary(scratch, name, layers, files):
+    """checkLayers.py's exit code and output for a library folder
+    <scratch>/<name>/src/nmmSolid with these files ({relative path: text})
+    and a layers file listing these folders"""
     root = os.path.join(scratch, name, "src", "nmmSolid")
     shutil.rmtree(os.path.join(scratch, name), ignore_errors=True)
     os.makedirs(root)
@@ -39,10 +40,6 @@ def library(scratch, name, layers, files):
         os.makedirs(os.path.dirname(path), exist_ok=True)
         with open(path, "w") as f:
             f.write(text)
-    return root
-
-
-def run(root):
     p = subprocess.run([sys.executable, CHECK, root],
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                        universal_newlines=True)
@@ -55,7 +52,7 @@ def main(scratch):
     # Layered: includes of earlier folders, of the generated version.H
     # (absent from the source tree), of a listed folder that does not
     # exist yet, and violations that are only in comments or strings
-    root = library(scratch, "layered", order, {
+    rc, out = checkLibrary(scratch, "layered", order, {
         "global/a/a.H": '#include "nmmSolid/global/version.H"\n',
         "io/b/b.H": '#include "nmmSolid/global/a/a.H"\n'
                     '#include "nmmSolid/global/version.H"\n'
@@ -68,16 +65,14 @@ def main(scratch):
         "model/m/m.H": '#  include "nmmSolid/io/b/b.H"\n'
                        '#include "nmmSolid/space/s/s.H"\n',
     })
-    rc, out = run(root)
     expect(rc == 0, "a layered library passes", out)
 
     # (a) an include of a later folder, at its file and line
-    root = library(scratch, "upward", order, {
+    rc, out = checkLibrary(scratch, "upward", order, {
         "global/a/a.C": '#include "nmmSolid/global/a/a.H"\n\n'
                         '#include "nmmSolid/io/b/b.H"\n',
         "io/b/b.H": "\n",
     })
-    rc, out = run(root)
     expect(rc == 1, "an include of a later layer fails", out)
     expect('src/nmmSolid/global/a/a.C:3: #include "nmmSolid/io/b/b.H": '
            "global includes io, which comes after it in "
@@ -86,12 +81,11 @@ def main(scratch):
     expect("cycle" not in out, "a one-way include is no cycle", out)
 
     # (b) a cycle, with an include for each of its steps
-    root = library(scratch, "cycle", order, {
+    rc, out = checkLibrary(scratch, "cycle", order, {
         "io/b/b.H": '#include "nmmSolid/model/m/m.H"\n',
         "model/m/m.H": '#include "nmmSolid/space/s/s.H"\n',
         "space/s/s.H": '#include "nmmSolid/io/b/b.H"\n',
     })
-    rc, out = run(root)
     expect(rc == 1, "a cycle fails", out)
     expect("cycle between folders io, model, space: "
            "io -> model -> space -> io" in out, "the cycle is named", out)
@@ -103,12 +97,11 @@ def main(scratch):
 
     # (c) a folder that the order does not place, on disk or in an include;
     # two unlisted folders that include each other are still a cycle
-    root = library(scratch, "unlisted", order, {
+    rc, out = checkLibrary(scratch, "unlisted", order, {
         "extra/e/e.H": '#include "nmmSolid/other/o/o.H"\n',
         "other/o/o.H": '#include "nmmSolid/extra/e/e.H"\n',
         "io/b/b.H": '#include "nmmSolid/ghost/g.H"\n',
     })
-    rc, out = run(root)
     expect(rc == 1, "a folder outside the order fails", out)
     expect("src/nmmSolid/extra: folder 'extra' is not in "
            "src/nmmSolid/layers" in out, "the unlisted folder is named", out)
@@ -119,8 +112,8 @@ def main(scratch):
            "a cycle between unlisted folders is found", out)
 
     # A folder listed twice
-    root = library(scratch, "twice", order + ["io"], {"io/b/b.H": "\n"})
-    rc, out = run(root)
+    rc, out = checkLibrary(scratch, "twice", order + ["io"],
+                           {"io/b/b.H": "\n"})
     expect(rc == 1 and "'io' is listed twice" in out,
            "a folder listed twice fails", out)
 
