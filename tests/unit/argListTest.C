@@ -4,17 +4,20 @@ Description
     handling of applications (nmm::catchFatalErrors).
 \*---------------------------------------------------------------------------*/
 
-#include "nmmSolid/global/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/global/version.H"
+#include "nmmSolid/io/argList/argList.H"
 #include "nmmSolid/io/case/Time/Time.H"
 #include "nmmSolid/io/dictionary/IOerror.H"
+#include "nmmSolid/solver/linearSolver/singularSystem/singularSystem.H"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -225,6 +228,78 @@ TEST(fatalError, ioErrorsNameFileLineAndKeyword)
     EXPECT_TRUE(contains(err.str(), "case/system/controlDict")) << err.str();
     EXPECT_TRUE(contains(err.str(), "line 12")) << err.str();
     EXPECT_TRUE(contains(err.str(), "deltaT")) << err.str();
+}
+
+
+TEST(fatalError, ioErrorBlockIsPrintedWhole)
+{
+    std::ostringstream err;
+    nmm::catchFatalErrors([]() -> int
+    {
+        throw nmm::IOerror("bad value",
+            {nmm::internFileName("case/system/controlDict"), 12, 5}, "deltaT");
+    }, err);
+    EXPECT_EQ(err.str(), "\n--> FOAM FATAL IO ERROR:\nbad value\n\n"
+        "file: case/system/controlDict at line 12, column 5.\n"
+        "keyword: deltaT\n\nFOAM exiting\n\n");
+}
+
+
+TEST(fatalError, derivedErrorsPrintAsTheirBase)
+{
+    std::ostringstream err;
+    nmm::catchFatalErrors([]() -> int
+    {
+        throw nmm::singularSystem("zero pivot", 3, false);
+    }, err);
+    EXPECT_EQ(err.str(), "\n--> FOAM FATAL ERROR:\nzero pivot\n\nFOAM exiting\n\n");
+}
+
+
+// foamStyleError is a second base of both errors, not a common one:
+// neither catches the other, and std::exception stays unambiguous
+static_assert(!std::is_base_of_v<nmm::fatalError, nmm::IOerror>);
+static_assert(!std::is_base_of_v<nmm::IOerror, nmm::fatalError>);
+static_assert(!std::is_base_of_v<std::exception, nmm::foamStyleError>);
+
+TEST(fatalError, catchClausesSeparateTheTwoErrors)
+{
+    const auto caughtAs = [](const std::function<void()>& raise)
+    {
+        try
+        {
+            try
+            {
+                raise();
+            }
+            catch (const nmm::IOerror&)
+            {
+                return std::string("IOerror");
+            }
+            catch (const nmm::fatalError&)
+            {
+                return std::string("fatalError");
+            }
+        }
+        catch (const std::exception&)
+        {
+            return std::string("std::exception");
+        }
+        return std::string("nothing");
+    };
+    EXPECT_EQ(caughtAs([] { throw nmm::IOerror("x"); }), "IOerror");
+    EXPECT_EQ(caughtAs([] { throw nmm::fatalError("x"); }), "fatalError");
+    EXPECT_EQ(caughtAs([] { throw nmm::singularSystem("x", 0, true); }), "fatalError");
+    EXPECT_EQ(caughtAs([] { throw std::runtime_error("x"); }), "std::exception");
+
+    try
+    {
+        throw nmm::IOerror("x");
+    }
+    catch (const std::runtime_error& e)
+    {
+        EXPECT_STREQ(e.what(), "x");
+    }
 }
 
 

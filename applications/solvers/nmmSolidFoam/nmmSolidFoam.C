@@ -22,7 +22,7 @@ Usage
     system/controlDict stops the run after the next step, written.
 \*---------------------------------------------------------------------------*/
 
-#include "nmmSolid/global/argList/argList.H"
+#include "nmmSolid/io/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/global/signals/stopSignals.H"
 #include "nmmSolid/run/solidRun/solidRun.H"

@@ -27,8 +27,8 @@ Usage
     Rewriting a file drops its comments.
 \*---------------------------------------------------------------------------*/
 
-#include "nmmSolid/global/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
+#include "nmmSolid/io/argList/argList.H"
 #include "nmmSolid/io/dictionary/dictionary.H"
 
 #include <filesystem>

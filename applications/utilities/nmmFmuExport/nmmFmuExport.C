@@ -23,8 +23,8 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "nmmSolid/coupling/couplingVariables/couplingVariables.H"
-#include "nmmSolid/global/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
+#include "nmmSolid/io/argList/argList.H"
 #include "nmmSolid/io/case/caseFolder/caseFolder.H"
 #include "nmmSolid/io/dictionary/keywordTable.H"
 

@@ -60,8 +60,8 @@ Usage
 #include "nmmGeometryTools/blockList/blockList.H"
 #include "nmmGeometryTools/boxExtent/boxExtent.H"
 #include "nmmGeometryTools/geometryCase/geometryCase.H"
-#include "nmmSolid/global/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
+#include "nmmSolid/io/argList/argList.H"
 #include "nmmSolid/io/dictionary/dictionary.H"
 #include "nmmSolid/io/dictionary/keywordTable.H"
 

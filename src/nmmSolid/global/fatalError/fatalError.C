@@ -1,7 +1,5 @@
 #include "nmmSolid/global/fatalError/fatalError.H"
 
-#include "nmmSolid/io/dictionary/IOerror.H"
-
 #include <filesystem>
 #include <iostream>
 #include <new>
@@ -29,11 +27,8 @@ void fatalError::printFoamStyle(std::ostream& os) const
 
 void printFatalError(std::ostream& os, const std::exception& e)
 {
-    if (const auto* io = dynamic_cast<const IOerror*>(&e))
-    {
-        io->printFoamStyle(os);
-    }
-    else if (const auto* fe = dynamic_cast<const fatalError*>(&e))
+    // fatalError, IOerror, and whatever derives from them
+    if (const auto* fe = dynamic_cast<const foamStyleError*>(&e))
     {
         fe->printFoamStyle(os);
     }

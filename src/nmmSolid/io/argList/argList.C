@@ -1,4 +1,4 @@
-#include "nmmSolid/global/argList/argList.H"
+#include "nmmSolid/io/argList/argList.H"
 
 #include "nmmSolid/global/clock/clockTime.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
