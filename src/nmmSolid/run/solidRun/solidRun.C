@@ -5,7 +5,7 @@
 #include "nmmSolid/boundary/initialVelocity/initialVelocity.H"
 #include "nmmSolid/contact/contactLaw/contactLaw.H"
 #include "nmmSolid/contact/contactProperties/contactProperties.H"
-#include "nmmSolid/global/argList/argList.H"
+#include "nmmSolid/io/argList/argList.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/output/solidOutput/solidOutput.H"
 
