@@ -36,6 +36,9 @@ import subprocess
 import sys
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]/"bin"/"tools"))
+import nmmVtk  # noqa: E402
+
 
 def fail(msg):
     print("FAIL: " + msg)
@@ -54,7 +57,6 @@ def main():
 
     try:
         import vtk
-        from vtk.util.numpy_support import vtk_to_numpy
     except ImportError as e:
         fail(f"cannot import VTK ({e}): install the Debian package python3-vtk9")
 
@@ -88,7 +90,7 @@ def main():
     messages = vtk.vtkStringOutputWindow()
     vtk.vtkOutputWindow.SetInstance(messages)
     problems = []
-    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader = nmmVtk.newReader("vtu")
     reader.AddObserver("ErrorEvent", lambda *a: problems.append("error"))
     reader.AddObserver("WarningEvent", lambda *a: problems.append("warning"))
     reader.SetFileName(str(vtu))
@@ -108,18 +110,18 @@ def main():
             fail(f"no cell data '{name}'")
         if a.GetNumberOfComponents() != nc:
             fail(f"'{name}' has {a.GetNumberOfComponents()} components, expected {nc}")
-    hasHoles = vtk_to_numpy(cd.GetArray("hasHoles"))
-    area = vtk_to_numpy(cd.GetArray("area"))
+    hasHoles = nmmVtk.toNumpy(cd.GetArray("hasHoles"))
+    area = nmmVtk.toNumpy(cd.GetArray("area"))
     if int(hasHoles.sum()) != args.holes or not set(hasHoles) <= {0, 1}:
         fail(f"{int(hasHoles.sum())} cells flagged hasHoles, expected {args.holes}")
     if args.materials is not None:
-        blockId = vtk_to_numpy(cd.GetArray("blockId"))
-        materialId = vtk_to_numpy(cd.GetArray("materialId"))
+        blockId = nmmVtk.toNumpy(cd.GetArray("blockId"))
+        materialId = nmmVtk.toNumpy(cd.GetArray("materialId"))
         for b, m in zip(blockId, materialId):
             if args.materials[b] != m:
                 fail(f"a cell of block {b} has materialId {m}, expected {args.materials[b]}")
 
-    points = vtk_to_numpy(grid.GetPoints().GetData())
+    points = nmmVtk.toNumpy(grid.GetPoints().GetData())
     parts = []
     for c in range(grid.GetNumberOfCells()):
         if grid.GetCellType(c) != 7:

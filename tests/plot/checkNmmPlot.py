@@ -31,6 +31,9 @@ import subprocess
 import sys
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]/"bin"/"tools"))
+import nmmVtk  # noqa: E402
+
 failures = []
 
 
@@ -46,13 +49,8 @@ def run(cmd):
 
 
 def cell_values(frame, field):
-    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    reader = vtkXMLUnstructuredGridReader()
-    reader.SetFileName(str(frame))
-    reader.Update()
-    return vtk_to_numpy(
-        reader.GetOutput().GetCellData().GetArray(field)).astype(float)
+    return nmmVtk.toNumpy(
+        nmmVtk.readGrid(frame).GetCellData().GetArray(field)).astype(float)
 
 
 def check_cell_colours(np, img, values, name):

@@ -62,9 +62,11 @@ class checks:
 
 
 def summary(case):
-    """summary.py -json of the copy: its rows by run name."""
+    """summary.py -json of the copy: its rows by run name. The copy finds
+    bin/tools (nmmVtk.py) through NMM_PROJECT_DIR, this project's."""
+    env = dict(os.environ, NMM_PROJECT_DIR=str(Path(__file__).resolve().parents[2]))
     out = subprocess.run([sys.executable, str(case/"summary.py"), "-json"],
-                         capture_output=True, text=True, check=True).stdout
+                         capture_output=True, text=True, check=True, env=env).stdout
     rows = {r["run"]: r for r in json.loads(out)}
     for r in rows.values():
         print(json.dumps(r))

@@ -42,15 +42,10 @@ def closedContacts(path):
     None when there is no such file."""
     if not path.is_file():
         return None
-    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    reader = vtkXMLPolyDataReader()
-    reader.SetFileName(str(path))
-    reader.Update()
-    a = reader.GetOutput().GetPointData().GetArray("contactState")
+    a = nf.nmmVtk.readPolyData(path).GetPointData().GetArray("contactState")
     if a is None:
         return None
-    return int((vtk_to_numpy(a) > 0).sum())
+    return int((nf.nmmVtk.toNumpy(a) > 0).sum())
 
 
 def history(caseDir):
@@ -122,8 +117,7 @@ def main(argv):
     if not heights:
         r.failed = True
     for k, d in enumerate(deepest):
-        n = closedContacts(Path(paths[d]).parent/("contacts_%s.vtp"
-                                                  % Path(paths[d]).stem.rsplit("_", 1)[1]))
+        n = closedContacts(nf.contactsFile(paths[d]))
         if n:
             r.info("impact %d: closed contacts n" % (k + 1), float(n))
             r.info("impact %d: omega dt" % (k + 1), c.omega(n)*c.deltaT)

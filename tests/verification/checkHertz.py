@@ -111,8 +111,7 @@ def upperSurface(vtu, sol):
 def lastFrame(caseDir):
     """The last element frame and the contact frame of the same write."""
     vtu = nf.readSeries(caseDir)[-1][1]
-    index = vtu.stem.rsplit("_", 1)[1]
-    return vtu, vtu.parent/("contacts_%s.vtp" % index)
+    return vtu, nf.contactsFile(vtu)
 
 
 def measure(caseDir, sol):

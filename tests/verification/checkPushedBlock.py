@@ -34,19 +34,13 @@ BLOCK = 1
 
 def contactStates(vtu):
     """contactState of the contacts file of a frame (numpy array), or None."""
-    index = Path(vtu).stem.rsplit("_", 1)[1]
-    path = Path(vtu).parent/("contacts_%s.vtp" % index)
+    path = nf.contactsFile(vtu)
     if not path.is_file():
         return None
-    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    reader = vtkXMLPolyDataReader()
-    reader.SetFileName(str(path))
-    reader.Update()
-    a = reader.GetOutput().GetPointData().GetArray("contactState")
+    a = nf.nmmVtk.readPolyData(path).GetPointData().GetArray("contactState")
     if a is None:
         raise SystemExit("%s: no point data contactState" % path)
-    return vtk_to_numpy(a).astype(int)
+    return nf.nmmVtk.toNumpy(a).astype(int)
 
 
 def main(argv):

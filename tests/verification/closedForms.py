@@ -3,7 +3,9 @@
 
 Every function takes undeformed coordinates (numpy arrays) and returns
 numpy arrays; stresses are (sxx, syy, sxy) in the plane. The parameters are
-those of tutorials/verification/<case> (docs/verification.md, Continuum).
+tutorials/verification/caseParameters.py's, from which makeCases.py writes
+the cases (docs/verification.md, Continuum and Contact); each class here
+adds the closed form to its case's parameters.
 
 The formulas are checked on their own by selfTest.py: Hooke's law applied
 to the strain of the displacement field (finite differences) must give the
@@ -14,8 +16,13 @@ SPDX-License-Identifier: GPL-3.0-or-later
 """
 
 import math
+import sys
+from pathlib import Path
 
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]/"tutorials"/"verification"))
+import caseParameters as cp  # noqa: E402
 
 
 def planeModuli(E, nu, planeStress):
@@ -35,14 +42,8 @@ def planeModuli(E, nu, planeStress):
 # with these displacements the tip moves up by
 # P L^3/(3EI) + (4+5nu) P D^2 L/(24 E I).
 # --------------------------------------------------------------------------
-class cantilever:
-    L = 48.0
-    D = 12.0
-    E = 3e7
-    nu = 0.3
-    P = 1000.0
-    planeStress = True
-    I = D**3/12
+class cantilever(cp.cantilever):
+    I = cp.cantilever.D**3/12
 
     @classmethod
     def displacement(cls, x, y):
@@ -69,13 +70,7 @@ class cantilever:
 # Plate with a circular hole (Kirsch), infinite plate under sigma in x,
 # quarter model 0 <= x, y <= 5 minus the disc r < a, plane strain.
 # --------------------------------------------------------------------------
-class kirsch:
-    a = 1.0
-    side = 5.0
-    S = 1.0
-    E = 1000.0
-    nu = 0.3
-    planeStress = False
+class kirsch(cp.kirsch):
 
     @classmethod
     def kappa(cls):
@@ -121,13 +116,7 @@ class kirsch:
 # Thick cylinder under inner pressure (Lame), quarter ring a <= r <= b,
 # plane strain.
 # --------------------------------------------------------------------------
-class lame:
-    a = 0.1
-    b = 0.2
-    p = 10e6
-    E = 10e9
-    nu = 0.25
-    planeStress = False
+class lame(cp.lame):
 
     @classmethod
     def AB(cls):
@@ -165,14 +154,7 @@ class lame:
 # Pressurised crack (Sneddon), plane strain: total opening
 # w(s) = 4 p (1 - nu^2)/E sqrt(a^2 - s^2), s along the crack from its centre.
 # --------------------------------------------------------------------------
-class sneddon:
-    a = 0.1
-    side = 2.0          # 20 a, centred on the crack
-    E = 1.0
-    nu = 0.15
-    p = 1.0
-    planeStress = False
-    angles = (0.0, 30.0, 45.0)
+class sneddon(cp.sneddon):
 
     @classmethod
     def Eprime(cls):
@@ -192,10 +174,7 @@ class sneddon:
 # --------------------------------------------------------------------------
 # Free fall: one unsupported block under gravity from rest.
 # --------------------------------------------------------------------------
-class freeFall:
-    g = 9.81
-    deltaT = 0.01
-    nSteps = 10
+class freeFall(cp.freeFall):
 
     @classmethod
     def displacementY(cls, t):
@@ -211,17 +190,7 @@ class freeFall:
 # that the plane stress bar is exactly one-dimensional and c = sqrt(E/rho).
 # Behind the front: sigma_xx = -p0, u_x = p0/E (c t - x), U_x = p0 c/E.
 # --------------------------------------------------------------------------
-class waveBar:
-    L = 10.0
-    H = 0.5
-    E = 1e9
-    nu = 0.0
-    planeStress = True
-    rho = 1000.0
-    p0 = 1e6
-    station = 5.0
-    deltaT = 5e-5
-    endTime = 1e-2
+class waveBar(cp.waveBar):
 
     @classmethod
     def c(cls):
@@ -259,11 +228,7 @@ def allowedPenetration(halfSize, maxDisplacementRatio=0.005):
 # Block on an incline at a to the horizontal, dry friction phi, from rest:
 # d(t) = g (sin a - cos a tan phi) t^2/2 while tan phi < tan a, else 0.
 # --------------------------------------------------------------------------
-class incline:
-    a = 30.0            # degrees
-    g = 9.81
-    phis = (0, 10, 20, 29, 31)
-    maxDisplacementRatio = 0.005
+class incline(cp.incline):
 
     @classmethod
     def slides(cls, phi):
@@ -290,13 +255,7 @@ class incline:
 #   M = m g/2 [(h sin a - b cos a) cos theta + (h cos a + b sin a) sin theta];
 # linearised in theta, theta(t) = alpha0/k (cosh(sqrt(k) t) - 1).
 # --------------------------------------------------------------------------
-class topple:
-    a = 30.0            # degrees
-    g = 9.81
-    maxDisplacementRatio = 0.005
-    regimes = {"stable": (1.0, 1.0, 40.0), "sliding": (1.0, 1.0, 20.0),
-               "toppling": (0.25, 1.0, 40.0)}     # b, h, phi
-    x0 = 0.25           # the block's uphill bottom corner (x0, 0)
+class topple(cp.topple):
     maxRotation = 1e-3  # [rad] of the stable and the sliding block
     rotationTolerance = 0.03
     slipRatio = 0.05    # pivot's x displacement / the top corner's
@@ -354,13 +313,7 @@ class topple:
 # parallel for a vertical impact): omega = sqrt(n kN/m). Elastic contact
 # conserves energy, so every rebound reaches h0 (trapezoidal rule).
 # --------------------------------------------------------------------------
-class bouncingBlock:
-    h0 = 1.0
-    g = 9.81
-    rho = 2000.0
-    area = 1.0
-    normalPenalty = 5e6
-    deltaT = 1e-3
+class bouncingBlock(cp.bouncingBlock):
     trapezoidalTolerance = 0.03     # rebound height / h0
     energyDriftPerBounce = 0.01
 
@@ -386,14 +339,7 @@ class bouncingBlock:
 # pushed horizontally by F(t) = rate t; weight W = m g. The bond breaks at
 # F = c L + W tan phi; then m x'' = F - W tan phi.
 # --------------------------------------------------------------------------
-class pushedBlock:
-    L = 1.0
-    W = 1.0
-    m = 1.0
-    c = 0.1
-    phi = 30.0
-    rate = 1.0          # N/m per s
-    deltaT = 0.01
+class pushedBlock(cp.pushedBlock):
 
     @classmethod
     def onsetForce(cls):
@@ -427,12 +373,7 @@ class pushedBlock:
 # (plane strain), P the load per unit thickness. The flat is stiff
 # (E = 1e4), not rigid; its compliance is in E*.
 # --------------------------------------------------------------------------
-class hertz:
-    R = 1.0             # cylinder radius
-    P = 0.01            # load per unit thickness [N/m]
-    E1, nu1 = 1.0, 0.3          # cylinder
-    E2, nu2 = 1e4, 0.3          # flat
-    thickness = 1.0
+class hertz(cp.hertz):
 
     @classmethod
     def Reff(cls):
@@ -458,10 +399,7 @@ class hertz:
 
 # Two identical discs (R1 = R2 = 1, both E = 1): R = R1 R2/(R1 + R2) = 1/2,
 # E* halved: a and p0 come out as for the cylinder on the (stiff) flat
-class discOnDisc(hertz):
-    R1 = 1.0
-    R2 = 1.0
-    E2, nu2 = 1.0, 0.3
+class discOnDisc(hertz, cp.discOnDisc):
 
     @classmethod
     def Reff(cls):
@@ -475,11 +413,7 @@ class discOnDisc(hertz):
 # (Frocht; Jaeger and Cook). At the centre sigma_x = 2P/(pi D t) (tension),
 # sigma_y = -6P/(pi D t).
 # --------------------------------------------------------------------------
-class brazilian:
-    D = 0.05
-    t = 1.0
-    P = 1e5
-    E, nu = 20e9, 0.25
+class brazilian(cp.brazilian):
 
     @classmethod
     def centreTension(cls):
@@ -503,13 +437,7 @@ class brazilian:
 # normal stress sigma_n the peak shear force is c L + sigma_n L tan(phi),
 # the residual after the break sigma_n L tan(phi). Forces per unit thickness.
 # --------------------------------------------------------------------------
-class bondedInterface:
-    L = 1.0
-    T = 1e6
-    c = 2e6
-    phi = 30.0
-    sigmas = (0.0, 1e6, 5e6)
-    stepsToPeak = 40    # load steps to the peak in the tutorials
+class bondedInterface(cp.bondedInterface):
 
     @classmethod
     def tensionPeak(cls):

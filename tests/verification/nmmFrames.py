@@ -1,5 +1,6 @@
 # Needs Debian's /usr/bin/python3 (python3-vtk9 and python3-numpy).
-"""Read the frames an nmmSolidFoam run writes, for the verification checks.
+"""The frames an nmmSolidFoam run writes (read by bin/tools/nmmVtk.py), for
+the verification checks.
 
     series = readSeries(caseDir)        # [(time, path), ...] time order
     f = readFrame(path)                 # a frame: numpy arrays
@@ -15,71 +16,25 @@ squares extrapolation of element (cell) values to a boundary.
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 
-import json
 import sys
 from pathlib import Path
 
 import numpy as np
 
 
-def importVtk():
-    try:
-        from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
-        from vtkmodules.util.numpy_support import vtk_to_numpy
-    except ImportError as e:
-        sys.exit("%s: cannot import VTK (%s); install Debian's python3-vtk9 "
-                 "and run this with /usr/bin/python3" % (Path(sys.argv[0]).name, e))
-    return vtkXMLUnstructuredGridReader, vtk_to_numpy
-
-
-def seriesFile(caseDir):
-    caseDir = Path(caseDir).resolve()
-    return caseDir/"VTK"/(caseDir.name + ".vtu.series")
-
-
-def readSeries(caseDir):
-    path = seriesFile(caseDir)
-    if not path.is_file():
-        raise SystemExit("no %s (has the case been run?)" % path)
-    data = json.loads(path.read_text())
-    if data.get("file-series-version") != "1.0":
-        raise SystemExit("%s: file-series-version is not 1.0" % path)
-    frames = [(float(e["time"]), path.parent/e["name"]) for e in data["files"]]
-    if not frames:
-        raise SystemExit("%s lists no files" % path)
-    frames.sort(key=lambda f: f[0])
-    return frames
-
-
-class frame:
-    pass
+# The reading itself is bin/tools/nmmVtk.py's, shared with nmmPlot and the
+# tutorials' summaries
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]/"bin"/"tools"))
+from nmmVtk import contactsFile, readContacts, readContactSeries  # noqa: E402,F401
+from nmmVtk import readSeries, seriesFile  # noqa: E402,F401
+import nmmVtk  # noqa: E402
 
 
 def readFrame(path):
-    reader_t, vtk_to_numpy = importVtk()
-    reader = reader_t()
-    reader.SetFileName(str(path))
-    reader.Update()
-    grid = reader.GetOutput()
-    if grid is None or grid.GetNumberOfPoints() == 0:
-        raise SystemExit("%s: no points" % path)
-    f = frame()
-    f.path = Path(path)
-    f.x = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)[:, :2].copy()
-    f.pointData = {}
-    pd = grid.GetPointData()
-    for i in range(pd.GetNumberOfArrays()):
-        a = pd.GetArray(i)
-        f.pointData[a.GetName()] = vtk_to_numpy(a).astype(float)
-    f.cellData = {}
-    cd = grid.GetCellData()
-    for i in range(cd.GetNumberOfArrays()):
-        a = cd.GetArray(i)
-        f.cellData[a.GetName()] = vtk_to_numpy(a).astype(float)
-    f.cells = []
-    for c in range(grid.GetNumberOfCells()):
-        ids = grid.GetCell(c).GetPointIds()
-        f.cells.append([ids.GetId(k) for k in range(ids.GetNumberOfIds())])
+    """nmmVtk's frame with the displacement: D, U (None when not written),
+    the undeformed points X = x - D and the cells' undeformed centroids and
+    areas."""
+    f = nmmVtk.readFrame(path)
     for name in ("D",):
         if name not in f.pointData:
             raise SystemExit("%s: no point data '%s'" % (path, name))
@@ -94,8 +49,7 @@ def contactsOfFrame(vtu):
     """The point data of the contacts file of a frame (VTK/contacts_<index>
     .vtp next to <case>_<index>.vtu) as {name: numpy array} (readContacts);
     None if the frame has no contacts file."""
-    index = Path(vtu).stem.rsplit("_", 1)[1]
-    path = Path(vtu).parent/("contacts_%s.vtp" % index)
+    path = contactsFile(vtu)
     return readContacts(path).data if path.is_file() else None
 
 
@@ -280,52 +234,3 @@ class report:
                      num(tol, "%.3g"), v))
         print("%s: %s" % (self.title, "FAILED" if self.failed else "passed"))
         return 1 if self.failed else 0
-
-
-# --------------------------------------------------------------------------
-# Contact output: VTK/contacts_<i>.vtp and VTK/contacts.vtp.series
-# --------------------------------------------------------------------------
-def readContactSeries(caseDir):
-    """[(time, path), ...] of VTK/contacts.vtp.series, in time order."""
-    path = Path(caseDir).resolve()/"VTK"/"contacts.vtp.series"
-    if not path.is_file():
-        raise SystemExit("no %s (has the case been run? does it have contacts?)"
-                         % path)
-    data = json.loads(path.read_text())
-    frames = [(float(e["time"]), path.parent/e["name"]) for e in data["files"]]
-    if not frames:
-        raise SystemExit("%s lists no files" % path)
-    frames.sort(key=lambda f: f[0])
-    return frames
-
-
-def readContacts(path):
-    """A contact frame: x (contact points), and the point data arrays
-    (contactState, bondIntact, normalForce, shearForce, penetration, slip,
-    normal, force) as numpy arrays; no points gives empty arrays."""
-    try:
-        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-        from vtkmodules.util.numpy_support import vtk_to_numpy
-    except ImportError as e:
-        sys.exit("%s: cannot import VTK (%s); install Debian's python3-vtk9 "
-                 "and run this with /usr/bin/python3" % (Path(sys.argv[0]).name, e))
-    reader = vtkXMLPolyDataReader()
-    reader.SetFileName(str(path))
-    reader.Update()
-    poly = reader.GetOutput()
-    c = frame()
-    c.path = Path(path)
-    n = poly.GetNumberOfPoints() if poly is not None else 0
-    c.x = (vtk_to_numpy(poly.GetPoints().GetData()).astype(float)[:, :2].copy()
-           if n else np.zeros((0, 2)))
-    c.data = {}
-    pd = poly.GetPointData() if n else None
-    for i in range(pd.GetNumberOfArrays() if pd is not None else 0):
-        a = pd.GetArray(i)
-        c.data[a.GetName()] = vtk_to_numpy(a).astype(float)
-    for name in ("contactState", "bondIntact", "normalForce", "shearForce"):
-        if name not in c.data:
-            c.data[name] = np.zeros(n) if n == 0 else None
-            if n:
-                raise SystemExit("%s: no point data '%s'" % (path, name))
-    return c

@@ -58,17 +58,13 @@ import sys
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]/"bin"/"tools"))
+import nmmVtk  # noqa: E402
+
+
 def import_modules():
     """numpy and VTK, or exit naming the missing Debian packages."""
-    missing = []
-    try:
-        import numpy  # noqa: F401
-    except ImportError as e:
-        missing.append(("python3-numpy", e))
-    try:
-        from vtkmodules import vtkCommonCore, vtkIOXML  # noqa: F401
-    except ImportError as e:
-        missing.append(("python3-vtk9", e))
+    missing = nmmVtk.missingPackages()
     if missing:
         packages = " ".join(p for p, _ in missing)
         sys.exit(
@@ -125,8 +121,7 @@ class vtkMessages:
 # Comparisons
 
 def as_numpy(vtk_array):
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    return vtk_to_numpy(vtk_array).reshape(-1)
+    return nmmVtk.toNumpy(vtk_array).reshape(-1)
 
 
 NUMPY_TYPES = {"Float64": "float64", "Int32": "int32", "Int64": "int64"}
@@ -208,9 +203,7 @@ class fileCheck:
 
     # VTK's reader
     def read(self):
-        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLUnstructuredGridReader
-        reader = (vtkXMLUnstructuredGridReader() if self.entry["kind"] == "vtu"
-                  else vtkXMLPolyDataReader())
+        reader = nmmVtk.newReader(self.entry["kind"])
         self.messages.watch(reader)
         self.messages.take()
         if not self.expect(reader.CanReadFile(str(self.path)) == 1,

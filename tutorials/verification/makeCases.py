@@ -11,7 +11,9 @@ incline/phi{0,10,20,29,31}, topple/{stable,sliding,toppling},
 pushedBlock, bouncingBlock/{trapezoidal,DDA} (their Allrun, Allclean and
 README.md too). The files it writes
 are committed, so running it is only needed after changing a parameter
-here; the README of each case explains the choices. The polygons of the
+here or in caseParameters.py (the physical parameters, which
+tests/verification/closedForms.py shares); the README of each case
+explains the choices. The polygons of the
 curved boundaries are written out in full (64 chords per quarter circle,
 256 for the plates with a hole).
 
@@ -20,6 +22,8 @@ SPDX-License-Identifier: GPL-3.0-or-later
 
 import math
 from pathlib import Path
+
+import caseParameters as cp
 
 HERE = Path(__file__).resolve().parent
 NARC = 64           # chords per quarter circle
@@ -55,6 +59,18 @@ def fmt(v):
         return "0"
     r = repr(v)
     return r[:-2] if r.endswith(".0") else r
+
+
+def num(v):
+    """A parameter as a dictionary spells it: large and small magnitudes as
+    mantissa and exponent (3e7), the rest plainly (0.25); 12 significant
+    digits, so that a coefficient computed from the parameters (3 nu) is
+    written as the number it stands for (0.9)."""
+    v = float(v)
+    if v != 0 and not 1e-4 <= abs(v) < 1e4:
+        m, e = ("%.11e" % v).split("e")
+        return "%se%d" % (m.rstrip("0").rstrip("."), int(e))
+    return "%.12g" % v
 
 
 def polygon(points, indent="        "):
@@ -193,79 +209,91 @@ def arc(r, t0, t1, n, ends=False):
 # --------------------------------------------------------------------------
 def cantilever():
     c = "cantilever"
+    p = cp.cantilever
+    L, h, nu = p.L, p.D/2, p.nu
+    I = p.D**3/12
     controlDict(c, 1, 1, "Static: one step, loads evaluated at t = 1")
     staticSolution(c, smallDisplacement=True)
-    mechanicalProperties(c, True, "beam", "3e7", "0.3", "1")
+    mechanicalProperties(c, p.planeStress, "beam", num(p.E), num(nu), num(p.rho))
     meshDict(c, """\
-    beam { material beam; polygon ((0 -6) (48 -6) (48 6) (0 6)); }
-""", """\
-    fixedEnd    { type box; min (-1e-6 -7); max (1e-6 7); }
-    loadedEnd   { type box; min (47.999999 -7); max (48.000001 7); }
-""", """\
+    beam { material beam; polygon (%s %s %s %s); }
+""" % (pt((0, -h)), pt((L, -h)), pt((L, h)), pt((0, h))), """\
+    fixedEnd    { type box; min (-1e-6 %s); max (1e-6 %s); }
+    loadedEnd   { type box; min (%s %s); max (%s %s); }
+""" % (num(-h - 1), num(h + 1), num(L - 1e-6), num(-h - 1), num(L + 1e-6), num(h + 1)),
+        """\
     type        structured;
     cellSize    0.5;
 """)
-    # P/(6EI) with I = D^3/12 = 144; P/(2I) = 1000/288
-    k = "1000/(6*3e7*144)"
+    # Timoshenko and Goodier's displacements, P/(6EI) written out
+    k = "%s/(6*%s*%s)" % (num(p.P), num(p.E), num(I))
     D(c, """\
     // Timoshenko-Goodier displacements (exact at x = 0)
     fixedEnd
     {
         type    fixedValue;
         value   expression
-            "vector(-%s*y*((6*48 - 3*x)*x + 2.3*(y*y - 36)), %s*(0.9*y*y*(48 - x) + 5.5*144*x/4 + (144 - x)*x*x), 0)";
+            "vector(-%s*y*((6*%s - 3*x)*x + %s*(y*y - %s)), %s*(%s*y*y*(%s - x) + %s*%s*x/4 + (%s - x)*x*x), 0)";
     }
-    // Parabolic shear, resultant +P = 1000 (upward)
+    // Parabolic shear, resultant +P = %s (upward)
     loadedEnd
     {
         type        tractionDisplacement;
-        traction    expression "vector(0, 1000/288*(36 - y*y), 0)";
+        traction    expression "vector(0, %s/%s*(%s - y*y), 0)";
         pressure    uniform 0;
     }
-""" % (k, k))
+""" % (k, num(L), num(2 + nu), num(h*h), k, num(3*nu), num(L), num(4 + 5*nu),
+       num(p.D**2), num(3*L), num(p.P), num(p.P), num(2*I), num(h*h)))
 
 
 # --------------------------------------------------------------------------
 def kirschStress():
-    q2 = "1/(x*x + y*y)"
-    q4 = "1/sqr(x*x + y*y)"
+    k = cp.kirsch
+    q2 = "%s/(x*x + y*y)" % num(k.a**2)
+    q4 = "%s/sqr(x*x + y*y)" % num(k.a**4)
     c2, c4 = "cos(2*atan2(y, x))", "cos(4*atan2(y, x))"
     s2, s4 = "sin(2*atan2(y, x))", "sin(4*atan2(y, x))"
-    sxx = "1 - %s*(1.5*%s + %s) + 1.5*%s*%s" % (q2, c2, c4, q4, c4)
-    syy = "-%s*(0.5*%s - %s) - 1.5*%s*%s" % (q2, c2, c4, q4, c4)
-    sxy = "-%s*(0.5*%s + %s) + 1.5*%s*%s" % (q2, s2, s4, q4, s4)
+
+    def scaled(e):
+        return e if k.S == 1 else "%s*(%s)" % (num(k.S), e)
+    sxx = scaled("1 - %s*(1.5*%s + %s) + 1.5*%s*%s" % (q2, c2, c4, q4, c4))
+    syy = scaled("-%s*(0.5*%s - %s) - 1.5*%s*%s" % (q2, c2, c4, q4, c4))
+    sxy = scaled("-%s*(0.5*%s + %s) + 1.5*%s*%s" % (q2, s2, s4, q4, s4))
     return sxx, syy, sxy
 
 
 def plateHole():
     c = "plateHole"
+    k = cp.kirsch
+    a, s = k.a, k.side
     controlDict(c, 1, 1, "Static: one step, loads evaluated at t = 1")
     staticSolution(c, smallDisplacement=True)
-    mechanicalProperties(c, False, "plate", "1000", "0.3", "1")
+    mechanicalProperties(c, k.planeStress, "plate", num(k.E), num(k.nu), num(k.rho))
     # 256 chords: the L2 error of the finest rate mesh (h = 0.025) would
     # otherwise be that of the polygon, not of the discretisation
-    pts = [(1, 0), (5, 0), (5, 5), (0, 5), (0, 1)] \
-        + arc(1.0, math.pi/2, 0.0, 4*NARC)
+    corners = [(a, 0), (s, 0), (s, s), (0, s), (0, a)]
+    pts = corners + arc(a, math.pi/2, 0.0, 4*NARC)
     meshDict(c, """\
     plate
     {
         material plate;
-        // (1 0) (5 0) (5 5) (0 5) (0 1), then the hole r = 1 back to (1 0)
+        // %s, then the hole r = %s back to %s
         polygon%s;
     }
-""" % polygon(pts), """\
-    right       { type box; min (4.999999 -1); max (6 6); }
-    top         { type box; min (-1 4.999999); max (6 6); }
-    symmetryX   { type box; min (-1e-6 0.5); max (1e-6 6); }
-    symmetryY   { type box; min (0.5 -1e-6); max (6 1e-6); }
-""", """\
+""" % (" ".join(pt(q) for q in corners), num(a), pt(corners[0]), polygon(pts)), """\
+    right       { type box; min (%s -1); max (%s %s); }
+    top         { type box; min (-1 %s); max (%s %s); }
+    symmetryX   { type box; min (-1e-6 %s); max (1e-6 %s); }
+    symmetryY   { type box; min (%s -1e-6); max (%s 1e-6); }
+""" % (num(s - 1e-6), num(s + 1), num(s + 1), num(s - 1e-6), num(s + 1), num(s + 1),
+       num(a/2), num(s + 1), num(a/2), num(s + 1)), """\
     type        structured;
     cellSize    0.05;
 """)
     sxx, syy, sxy = kirschStress()
     D(c, """\
-    // Kirsch's stresses (a = 1, sigma = 1 in x) as tractions on the outer
-    // edges: n = (1 0) on x = 5, n = (0 1) on y = 5
+    // Kirsch's stresses (a = %s, sigma = %s in x) as tractions on the outer
+    // edges: n = (1 0) on x = %s, n = (0 1) on y = %s
     right
     {
         type        tractionDisplacement;
@@ -282,30 +310,32 @@ def plateHole():
     }
     symmetryX   { type fixedNormal; }
     symmetryY   { type fixedNormal; }
-""" % (sxx, sxy, sxy, syy))
+""" % (num(a), num(k.S), num(s), num(s), sxx, sxy, sxy, syy))
 
 
 # --------------------------------------------------------------------------
 def lame():
     c = "lame"
-    a, b = 0.1, 0.2
+    m = cp.lame
+    a, b = m.a, m.b
     controlDict(c, 1, 1, "Static: one step, loads evaluated at t = 1")
     staticSolution(c, smallDisplacement=True)
-    mechanicalProperties(c, False, "steel", "10e9", "0.25", "7800")
+    mechanicalProperties(c, m.planeStress, "steel", num(m.E), num(m.nu), num(m.rho))
     pts = [(b, 0)] + arc(b, 0.0, math.pi/2, NARC) + [(0, b), (0, a)] \
         + arc(a, math.pi/2, 0.0, NARC) + [(a, 0)]
     meshDict(c, """\
     ring
     {
         material steel;
-        // outer arc r = 0.2 from (0.2 0) to (0 0.2), inner arc r = 0.1 back
+        // outer arc r = %s from %s to %s, inner arc r = %s back
         polygon%s;
     }
-""" % polygon(pts), """\
-    inner       { type box; min (-1e-6 -1e-6); max (0.100001 0.100001); }
-    symmetryX   { type box; min (-1e-6 0.05); max (1e-6 0.3); }
-    symmetryY   { type box; min (0.05 -1e-6); max (0.3 1e-6); }
-""", """\
+""" % (num(b), pt((b, 0)), pt((0, b)), num(a), polygon(pts)), """\
+    inner       { type box; min (-1e-6 -1e-6); max (%s %s); }
+    symmetryX   { type box; min (-1e-6 %s); max (1e-6 %s); }
+    symmetryY   { type box; min (%s -1e-6); max (%s 1e-6); }
+""" % (num(a + 1e-6), num(a + 1e-6), num(a/2), num(b + 0.1), num(a/2), num(b + 0.1)),
+        """\
     type        structured;
     cellSize    0.0025;
 """)
@@ -314,17 +344,19 @@ def lame():
     {
         type        tractionDisplacement;
         traction    uniform (0 0 0);
-        pressure    uniform 1e7;
+        pressure    uniform %s;
     }
     symmetryX   { type fixedNormal; }
     symmetryY   { type fixedNormal; }
-""")
+""" % num(m.p))
 
 
 # --------------------------------------------------------------------------
 def freeFall():
     c = "freeFall"
-    controlDict(c, 0.1, 0.01, "Ten steps of 0.01 s, every step written")
+    f = cp.freeFall
+    controlDict(c, f.nSteps*f.deltaT, f.deltaT,
+                "%d steps of %s s, every step written" % (f.nSteps, num(f.deltaT)))
     write(c, "system/nmmSolution", "system", "nmmSolution", """\
 analysis        dynamic;
 
@@ -333,12 +365,8 @@ timeScheme      { type DDA; velocityRatio 1; }
 
 linearSolver    { type cholmod; }
 """)
-    mechanicalProperties(c, False, "rock", "1e8", "0.3", "2000")
-    write(c, "constant/g", "constant", "g", """\
-dimensions      [0 1 -2 0 0 0 0];
-
-value           (0 -9.81 0);
-""", cls="uniformDimensionedVectorField")
+    mechanicalProperties(c, False, "rock", num(f.E), num(f.nu), num(f.rho))
+    gravity(c, 0, -f.g)
     meshDict(c, """\
     cube { material rock; polygon ((0 0) (1 0) (1 1) (0 1)); }
 """, "", """\
@@ -351,8 +379,12 @@ value           (0 -9.81 0);
 # --------------------------------------------------------------------------
 def waveBar():
     c = "waveBar"
-    controlDict(c, 1e-2, 5e-5, "200 steps of 5e-5 s (Courant number c dt/h = 0.5), "
-                "every step written")
+    w = cp.waveBar
+    cell = 0.1
+    controlDict(c, w.endTime, w.deltaT,
+                "%d steps of %s s (Courant number c dt/h = %s), every step written"
+                % (round(w.endTime/w.deltaT), num(w.deltaT),
+                   num(math.sqrt(w.E/w.rho)*w.deltaT/cell)))
     write(c, "system/nmmSolution", "system", "nmmSolution", """\
 analysis        dynamic;
 
@@ -361,65 +393,66 @@ timeScheme      { type Newmark; beta 0.25; gamma 0.5; }
 
 linearSolver    { type cholmod; }
 """)
-    mechanicalProperties(c, True, "bar", "1e9", "0", "1000")
+    mechanicalProperties(c, w.planeStress, "bar", num(w.E), num(w.nu), num(w.rho))
     meshDict(c, """\
-    bar { material bar; polygon ((0 0) (10 0) (10 0.5) (0 0.5)); }
-""", """\
+    bar { material bar; polygon (%s %s %s %s); }
+""" % (pt((0, 0)), pt((w.L, 0)), pt((w.L, w.H)), pt((0, w.H))), """\
     loaded      { type box; min (-1e-6 -1); max (1e-6 1); }
-    fixed       { type box; min (9.999999 -1); max (10.000001 1); }
-""", """\
+    fixed       { type box; min (%s -1); max (%s 1); }
+""" % (num(w.L - 1e-6), num(w.L + 1e-6)), """\
     type        structured;
-    cellSize    0.1;
-""")
+    cellSize    %s;
+""" % num(cell))
     D(c, """\
-    // Step load: 1 MPa from t = 0 on
+    // Step load: %s MPa from t = 0 on
     loaded
     {
         type        tractionDisplacement;
         traction    uniform (0 0 0);
-        pressure    uniform 1e6;
+        pressure    uniform %s;
     }
     fixed       { type fixedValue; value uniform (0 0 0); }
-""")
+""" % (num(w.p0/1e6), num(w.p0)))
 
 
 # --------------------------------------------------------------------------
 def sneddon(angleDeg):
     c = "sneddon/angle%d" % angleDeg
-    a = 0.1
+    p = cp.sneddon
+    a, h = p.a, p.side/2
     t = math.radians(angleDeg)
     tip = (a*math.cos(t), a*math.sin(t))
     controlDict(c, 1, 1, "Static: one step, loads evaluated at t = 1")
     # E = 1 and p = 1 open the crack by 4 times its length: the closed form
     # holds for the linear problem only
     staticSolution(c, smallDisplacement=True)
-    mechanicalProperties(c, False, "solid", "1", "0.15", "1")
+    mechanicalProperties(c, p.planeStress, "solid", num(p.E), num(p.nu), num(p.rho))
     contactProperties(c, 0, "// The pressurised crack opens: its faces never touch\n")
     meshDict(c, """\
-    plate { material solid; polygon ((-1 -1) (1 -1) (1 1) (-1 1)); }
-""", """\
+    plate { material solid; polygon (%s %s %s %s); }
+""" % (pt((-h, -h)), pt((h, -h)), pt((h, h)), pt((-h, h))), """\
     crack       { type joint; joint crack1; }
-    bottom      { type box; min (-2 -1.000001); max (2 -0.999999); }
-""", """\
+    bottom      { type box; min (%s %s); max (%s %s); }
+""" % (num(-2*h), num(-h - 1e-6), num(2*h), num(-h + 1e-6)), """\
     // Fine triangles in a band of half a crack length around the crack:
     // the opening depends on the resolution of the whole near field
     type        delaunay;
     cellSize    0.02;
     refineNearBoundaries { cellSize 0.002; distance 0.05; near joints; }
 """, joints="""\
-    // half-length a = 0.1 at %d degrees to the x axis (and the cover lines)
+    // half-length a = %s at %d degrees to the x axis (and the cover lines)
     crack1 { points (%s %s); }
-""" % (angleDeg, pt((-tip[0], -tip[1])), pt(tip)))
+""" % (num(a), angleDeg, pt((-tip[0], -tip[1])), pt(tip)))
     D(c, """\
     crack
     {
         type        tractionDisplacement;
         traction    uniform (0 0 0);
-        pressure    uniform 1;
+        pressure    uniform %s;
     }
-    // Rigid motion restrained on the far boundary, 10 a from the crack
+    // Rigid motion restrained on the far boundary, %s a from the crack
     bottom      { type fixedValue; value uniform (0 0 0); }
-""")
+""" % (num(p.p), num(h/a)))
 
 
 # --------------------------------------------------------------------------
@@ -566,20 +599,22 @@ def inclineSetup(c, a, scheme=DDA):
                "// and damps the velocity of the stiff contact springs, which DDA\n"
                "// does not (near the friction angle it makes the block slip\n"
                "// ahead); automatic penalties (50 E normal)\n")
-    contactSolution(c, scheme, stepControl="    maxDisplacementRatio    0.005;\n",
-                    comment=comment)
+    i = cp.incline
+    contactSolution(c, scheme, stepControl="    maxDisplacementRatio    %s;\n"
+                    % num(i.maxDisplacementRatio), comment=comment)
     mechanicalProperties(c, False, "rock", "1e9", "0.25", "2000")
-    gravity(c, 9.81*math.sin(a), -9.81*math.cos(a),
-            "// |g| = 9.81 at a = 30 degrees to -y: the base is the incline\n")
+    gravity(c, i.g*math.sin(a), -i.g*math.cos(a),
+            "// |g| = %s at a = %s degrees to -y: the base is the incline\n"
+            % (num(i.g), num(i.a)))
 
 
 def incline(phiDeg):
     """A 1 x 1 block on a 4 x 0.5 base fixed at its bottom; the slope is
     made by tilting gravity by a = 30 degrees, not the geometry."""
     c = "contact/incline/phi%d" % phiDeg
-    a = math.radians(30.0)
+    a = math.radians(cp.incline.a)
     dynamicControlDict(c, 1, 0.01, 0.1, "100 steps of 0.01 s, written every 0.1 s")
-    nearCritical = 0 < 30 - phiDeg <= NEAR_CRITICAL
+    nearCritical = 0 < cp.incline.a - phiDeg <= NEAR_CRITICAL
     inclineSetup(c, a, DAMPED if nearCritical else DDA)
     contactLaw(c, phiDeg, comment="// Dry friction only: phi = %d degrees (tan a = %.4f, tan phi = %.4f)\n"
                % (phiDeg, math.tan(a), math.tan(math.radians(phiDeg))))
@@ -635,8 +670,7 @@ the model's bounding box: 0.01 m here).
 
 # Sliding vs toppling: block b x h on the incline of incline() (a = 30
 # degrees, gravity tilted), dry friction phi; regime -> (b, h, phi).
-TOPPLE = {"stable": (1.0, 1.0, 40), "sliding": (1.0, 1.0, 20),
-          "toppling": (0.25, 1.0, 40)}
+TOPPLE = cp.topple.regimes
 
 
 def topple(regime):
@@ -646,9 +680,9 @@ def topple(regime):
     corner without sliding."""
     c = "contact/topple/%s" % regime
     b, h, phiDeg = TOPPLE[regime]
-    a = math.radians(30.0)
+    a = math.radians(cp.topple.a)
     tanA, tanPhi = math.tan(a), math.tan(math.radians(phiDeg))
-    x0 = 0.25
+    x0 = cp.topple.x0
     if regime == "toppling":
         # theta(t) = (alpha0/k)(cosh(sqrt(k) t) - 1) reaches 0.0453 rad at
         # 0.15 s: the early motion, small rotation
@@ -761,25 +795,28 @@ def bouncingBlock(scheme):
     that of a mass on a spring: with the trapezoidal rule it rebounds to
     h0; DDA damps it (restitution reported against omega dt)."""
     c = "contact/bouncingBlock/%s" % scheme
+    bb = cp.bouncingBlock
     trapezoidal = scheme == "trapezoidal"
-    dynamicControlDict(c, 1.9, 1e-3, 0.005,
+    dynamicControlDict(c, 1.9, bb.deltaT, 0.005,
                        "1900 steps of 1e-3 s (two bounces), written every 5e-3 s")
     contactSolution(
         c, TRAPEZOIDAL if trapezoidal else DDA,
-        contact="    normalPenalty           5e6;\n",
+        contact="    normalPenalty           %s;\n" % num(bb.normalPenalty),
         stepControl="    maxDisplacementRatio    0.05;\n",
         comment=("// Trapezoidal rule: no numerical damping\n" if trapezoidal else
                  "// DDA (Newmark beta = 1/2, gamma = 1): numerically damped\n")
         + "// Contact springs 5e6 N/m per contact point, far softer than the\n"
         "// blocks; maxDisplacementRatio 0.05 gives a search distance of\n"
         "// 0.156 m, so that the impact's penetration (v/omega) is allowed\n")
-    mechanicalProperties(c, False, "rock", "1e9", "0.25", "2000")
-    gravity(c, 0, -9.81)
+    mechanicalProperties(c, False, "rock", "1e9", "0.25", num(bb.rho))
+    gravity(c, 0, -bb.g)
     contactLaw(c, 0, comment="// Frictionless: the block only bounces\n")
+    side = math.sqrt(bb.area)
     meshDict(c, """\
     base  { material rock; polygon ((-0.5 -0.5) (1.5 -0.5) (1.5 0) (-0.5 0)); }
-    block { material rock; polygon ((0 1) (1 1) (1 2) (0 2)); }
-""", """\
+    block { material rock; polygon (%s %s %s %s); }
+""" % (pt((0, bb.h0)), pt((side, bb.h0)), pt((side, bb.h0 + side)), pt((0, bb.h0 + side))),
+        """\
     fixed       { type box; min (-1 -0.500001); max (2 -0.499999); }
 """, """\
     type        structured;
@@ -821,8 +858,10 @@ def pushedBlock():
     """A 1 x 1 block bonded to a base fixed at its bottom, pushed on its
     left side by a traction ramped linearly in time."""
     c = "contact/pushedBlock"
-    dynamicControlDict(c, 1, 0.01, 0.01,
-                       "100 steps of 0.01 s (load increments of 0.01 N/m), every step written")
+    pb = cp.pushedBlock
+    dynamicControlDict(c, 1, pb.deltaT, pb.deltaT,
+                       "100 steps of %s s (load increments of %s N/m), every step written"
+                       % (num(pb.deltaT), num(pb.rate*pb.deltaT)))
     contactSolution(
         c, DDA,
         contact="    normalPenalty           1e3;\n",
@@ -831,21 +870,23 @@ def pushedBlock():
         "// softer than the blocks (E = 1e4), so that the blocks move rigidly\n"
         "// on them and share the load evenly\n")
     write(c, "constant/mechanicalProperties", "constant", "mechanicalProperties", """\
-// Units: m, kg, s; rho = 1 and g = 1 make the weight per unit thickness
-// W = 1 N/m and the mass m = 1 kg/m
+// Units: m, kg, s; rho = %s and g = %s make the weight per unit thickness
+// W = %s N/m and the mass m = %s kg/m
 planeStress     no;
 
 thickness       1;
 
 materials
 {
-    rock { type linearElastic; E 1e4; nu 0.25; rho 1; }
+    rock { type linearElastic; E 1e4; nu 0.25; rho %s; }
 }
-""")
-    gravity(c, 0, -1, "// g = 1: W = rho g L^2 = 1 N/m\n")
-    contactLaw(c, 30, cohesion=0.1, tensileStrength=1, initialState="bonded",
-               comment="// Bonded at the start: c = 0.1 Pa, phi = 30 degrees; the\n"
-               "// tensile strength only keeps the bond from failing in tension\n")
+""" % (num(pb.m/pb.L**2), num(pb.W/pb.m), num(pb.W), num(pb.m), num(pb.m/pb.L**2)))
+    gravity(c, 0, -pb.W/pb.m, "// g = %s: W = rho g L^2 = %s N/m\n"
+            % (num(pb.W/pb.m), num(pb.W)))
+    contactLaw(c, pb.phi, cohesion=pb.c, tensileStrength=1, initialState="bonded",
+               comment="// Bonded at the start: c = %s Pa, phi = %s degrees; the\n"
+               "// tensile strength only keeps the bond from failing in tension\n"
+               % (num(pb.c), num(pb.phi)))
     meshDict(c, """\
     base  { material rock; polygon ((-0.5 -0.5) (2.5 -0.5) (2.5 0) (-0.5 0)); }
     block { material rock; polygon ((0 0) (1 0) (1 1) (0 1)); }
@@ -864,10 +905,10 @@ materials
     push
     {
         type        tractionDisplacement;
-        traction    expression "vector(t*(4 - 6*y), 0, 0)";
+        traction    expression "vector(%s*(4 - 6*y), 0, 0)";
         pressure    uniform 0;
     }
-""")
+""" % ("t" if pb.rate == 1 else "%s*t" % num(pb.rate)))
     scripts(c, "checkPushedBlock.py")
     readme(c, """\
 # pushedBlock: a bonded block pushed horizontally
@@ -953,8 +994,9 @@ def gradedArc(c, r, t0, t1, fine, coarse, fineLength):
             for q in s]
 
 
-HERTZ = {"R": 1.0, "P": 0.01, "E": 1.0, "nu": 0.3, "Eflat": 1e4,
-         "fine": 0.005, "fineLength": 0.25, "coarse": 0.05}
+HERTZ = {"R": cp.hertz.R, "P": cp.hertz.P, "E": cp.hertz.E1, "nu": cp.hertz.nu1,
+         "Eflat": cp.hertz.E2, "nuFlat": cp.hertz.nu2, "fine": cp.hertz.fine,
+         "fineLength": cp.hertz.fineLength, "coarse": cp.hertz.coarse}
 
 
 def hertzCase(c, discOnDisc=False):
@@ -986,7 +1028,7 @@ def hertzCase(c, discOnDisc=False):
         lower = "disc"
     else:
         contactMaterials(c, [("cylinder", h["E"], h["nu"], 1),
-                             ("flat", h["Eflat"], h["nu"], 1)])
+                             ("flat", h["Eflat"], h["nuFlat"], 1)])
         lower = "flat"
     upperMaterial = "disc" if discOnDisc else "cylinder"
     contactLaw(c, 0, comment="// Hertz's contact is frictionless\n")
@@ -1052,8 +1094,8 @@ def discOnDisc():
 
 
 
-BRAZILIAN = {"D": 0.05, "P": 1e5, "E": 20e9, "nu": 0.25,
-             "Eplaten": 200e9, "platenWidth": 0.01, "platenHeight": 0.005}
+BRAZILIAN = {k: getattr(cp.brazilian, k) for k in
+             ("D", "P", "E", "nu", "Eplaten", "platenWidth", "platenHeight")}
 
 
 def brazilian():
@@ -1109,8 +1151,8 @@ def brazilian():
     scripts(c, "checkBrazilian.py")
 
 
-BOND = {"L": 1.0, "T": 1e6, "c": 2e6, "phi": 30.0, "stepsToPeak": 40,
-        "extraSteps": 5}
+BOND = {k: getattr(cp.bondedInterface, k) for k in
+        ("L", "T", "c", "phi", "stepsToPeak", "extraSteps")}
 
 
 def bondedLaw(c):
@@ -1283,9 +1325,9 @@ if __name__ == "__main__":
     lame()
     freeFall()
     waveBar()
-    for angle in (0, 30, 45):
-        sneddon(angle)
-    for phi in (0, 10, 20, 29, 31):
+    for angle in cp.sneddon.angles:
+        sneddon(int(angle))
+    for phi in cp.incline.phis:
         incline(phi)
     for regime in ("stable", "sliding", "toppling"):
         topple(regime)
@@ -1296,5 +1338,5 @@ if __name__ == "__main__":
     discOnDisc()
     brazilian()
     bondedTension()
-    for sigma in (0, 1, 5):
-        bondedShear(sigma)
+    for sigma in cp.bondedInterface.sigmas:
+        bondedShear(round(sigma/1e6))

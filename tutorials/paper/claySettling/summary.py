@@ -17,6 +17,12 @@ import re
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+# bin/tools/nmmVtk.py reads the frames; a copy of the tutorial finds it
+# through etc/bashrc's NMM_PROJECT_DIR, the tutorial in place without it
+sys.path.insert(0, os.path.join(
+    os.environ.get("NMM_PROJECT_DIR") or os.path.join(HERE, "..", "..", ".."),
+    "bin", "tools"))
+import nmmVtk  # noqa: E402
 RUNS = ["settling", "settlingReduced"]
 
 
@@ -29,21 +35,14 @@ def rows(run, name):
 def lastFrameDisplacements(run):
     """Downward and horizontal extremes of the point displacements of the
     platelets (material 0, clay) in the last frame [m]."""
-    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    with open(os.path.join(HERE, run, "VTK", run + ".vtu.series")) as f:
-        last = json.load(f)["files"][-1]["name"]
-    reader = vtkXMLUnstructuredGridReader()
-    reader.SetFileName(os.path.join(HERE, run, "VTK", last))
-    reader.Update()
-    grid = reader.GetOutput()
-    D = vtk_to_numpy(grid.GetPointData().GetArray("D"))
-    material = vtk_to_numpy(grid.GetCellData().GetArray("materialId"))
+    f = nmmVtk.readFrame(nmmVtk.latestFrame(
+        os.path.join(HERE, run, "VTK", run + ".vtu.series")))
+    D = f.pointData["D"]
+    material = f.cellData["materialId"]
     clay = set()
-    for cell in range(grid.GetNumberOfCells()):
+    for cell, ids in enumerate(f.cells):
         if material[cell] == 0:
-            ids = grid.GetCell(cell).GetPointIds()
-            clay.update(ids.GetId(k) for k in range(ids.GetNumberOfIds()))
+            clay.update(ids)
     clay = sorted(clay)
     return -D[clay, 1].min(), abs(D[clay, 0]).max()
 
