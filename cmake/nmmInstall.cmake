@@ -49,7 +49,7 @@ write_basic_package_version_file(
 install(FILES
     "${PROJECT_BINARY_DIR}/cmake/nmmSolidConfig.cmake"
     "${PROJECT_BINARY_DIR}/cmake/nmmSolidConfigVersion.cmake"
-    # The static library's private dependency CHOLMOD::CHOLMOD is resolved
-    # in the consumer by this module (SuiteSparse 5 has no CMake package)
+    # nmmSolidConfig.cmake looks for the library's private dependency
+    # CHOLMOD with this module (SuiteSparse 5 has no CMake package)
     "${PROJECT_SOURCE_DIR}/cmake/FindCHOLMOD.cmake"
     DESTINATION "${NMM_INSTALL_CMAKEDIR}")

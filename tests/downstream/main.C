@@ -1,13 +1,16 @@
 /*---------------------------------------------------------------------------*\
 Description
     Downstream consumer of the installed nmmSolid package: links the
-    library for real (parses a dictionary with a macro) and prints the
-    version it was built against.
+    library for real (parses a dictionary with a macro), finds a contact
+    law that registered itself when the library was loaded (nothing here
+    names its class) and prints the version it was built against.
 \*---------------------------------------------------------------------------*/
 
+#include "nmmSolid/contact/contactLaw/contactLaw.H"
 #include "nmmSolid/global/version.H"
 #include "nmmSolid/io/dictionary/dictionary.H"
 
+#include <algorithm>
 #include <iostream>
 
 int main()
@@ -17,6 +20,12 @@ int main()
     if (d.get<int>("b") != 21)
     {
         std::cerr << "unexpected value of b\n";
+        return 1;
+    }
+    const auto laws = nmm::contactLaw::types();
+    if (std::find(laws.begin(), laws.end(), "mohrCoulomb") == laws.end())
+    {
+        std::cerr << "contact law mohrCoulomb not registered\n";
         return 1;
     }
     std::cout << "nmmSolid " << nmm::versionString << '\n';

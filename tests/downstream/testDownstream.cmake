@@ -1,7 +1,9 @@
 # cmake -P script run by the ctest test downstreamPackage:
 #   1. install the nmmSolid build tree NMM_BINARY_DIR into a scratch prefix,
 #   2. configure and build tests/downstream against that prefix only,
-#   3. run the result and check it prints the expected version.
+#   3. run the result and check it prints the expected version,
+#   4. run an installed application, which finds libnmmSolid.so through
+#      its install RPATH.
 # Variables: NMM_BINARY_DIR NMM_DOWNSTREAM_SOURCE_DIR NMM_WORK_DIR
 #            NMM_GENERATOR NMM_CXX_COMPILER NMM_BUILD_TYPE NMM_SANITIZE
 #            NMM_EXPECTED_VERSION
@@ -62,7 +64,7 @@ if(NMM_CXX_COMPILER)
     list(APPEND _configure "-DCMAKE_CXX_COMPILER=${NMM_CXX_COMPILER}")
 endif()
 if(NMM_SANITIZE)
-    # The static library is instrumented: its consumer must link the runtimes
+    # The library is instrumented: its consumer must link the runtimes
     list(APPEND _configure
         "-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined"
         "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined")
@@ -83,4 +85,19 @@ if(NOT _printed STREQUAL "nmmSolid ${NMM_EXPECTED_VERSION}")
     message(FATAL_ERROR "downstream test: printed '${_printed}', "
         "expected 'nmmSolid ${NMM_EXPECTED_VERSION}'")
 endif()
+
+# The installed solver finds libnmmSolid.so in the prefix by its install
+# RPATH, not by the build tree's nor by LD_LIBRARY_PATH; its help lists
+# the contact law that registered itself
+set(_solver "${_prefix}/bin/nmmSolidFoam")
+if(NOT EXISTS "${_solver}")
+    message(FATAL_ERROR "downstream test: ${_solver} not installed")
+endif()
+nmm_run("run installed nmmSolidFoam -help"
+    "${CMAKE_COMMAND}" -E env --unset=LD_LIBRARY_PATH "${_solver}" -help)
+if(NOT _nmm_last_output MATCHES "mohrCoulomb")
+    message(FATAL_ERROR "downstream test: nmmSolidFoam -help lists no "
+        "mohrCoulomb contact law:\n${_nmm_last_output}")
+endif()
+
 message(STATUS "downstream test: passed (${_printed})")

@@ -1,41 +1,12 @@
 #include "nmmSolid/contact/contactLaw/contactLaw.H"
 
-#include "nmmSolid/contact/mohrCoulomb/mohrCoulomb.H"
-
 #include <ostream>
 
 namespace nmm
 {
 
-namespace
-{
-
-template<class Type>
-bool add(const char* name)
-{
-    return contactLaw::selector::add
-    (
-        name,
-        [](const dictionary& d) { return std::make_unique<Type>(d); },
-        &Type::keywords()
-    );
-}
-
-//- The built-in laws are registered here, on first use, rather than by
-//  static objects in their own files: the library is static, and the
-//  linker drops object files that nothing refers to
-void addBuiltInTypes()
-{
-    static const bool added = add<mohrCoulomb>("mohrCoulomb");
-    (void)added;
-}
-
-} // End anonymous namespace
-
-
 std::unique_ptr<contactLaw> contactLaw::New(const dictionary& dict)
 {
-    addBuiltInTypes();
     if (!dict.found("law"))
     {
         std::string valid;
@@ -49,14 +20,12 @@ std::unique_ptr<contactLaw> contactLaw::New(const dictionary& dict)
 
 std::vector<std::string> contactLaw::types()
 {
-    addBuiltInTypes();
     return selector::names();
 }
 
 
 void contactLaw::printHelp(std::ostream& os)
 {
-    addBuiltInTypes();
     bool first = true;
     for (const auto& [name, record] : selector::table())
     {

@@ -6,6 +6,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(contactLaw, mohrCoulomb, "mohrCoulomb");
+
+
 namespace
 {
 

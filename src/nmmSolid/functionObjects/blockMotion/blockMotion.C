@@ -7,6 +7,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(functionObject, blockMotion, "blockMotion");
+
+
 namespace
 {
 

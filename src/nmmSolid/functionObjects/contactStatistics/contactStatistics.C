@@ -5,6 +5,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(functionObject, contactStatistics, "contactStatistics");
+
+
 const keywordTable& contactStatistics::keywords()
 {
     static const keywordTable table = []

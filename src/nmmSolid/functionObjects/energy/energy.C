@@ -5,6 +5,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(functionObject, energy, "energy");
+
+
 const keywordTable& energy::keywords()
 {
     static const keywordTable table = []

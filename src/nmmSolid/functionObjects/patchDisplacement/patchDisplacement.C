@@ -6,6 +6,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(functionObject, patchDisplacement, "patchDisplacement");
+
+
 const keywordTable& patchDisplacement::keywords()
 {
     static const keywordTable table = []

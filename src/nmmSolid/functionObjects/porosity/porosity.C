@@ -14,6 +14,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(functionObject, porosity, "porosity");
+
+
 namespace
 {
 

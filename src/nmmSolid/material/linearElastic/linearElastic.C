@@ -5,6 +5,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(solidMaterial, linearElastic, "linearElastic");
+
+
 namespace
 {
 

@@ -1,7 +1,5 @@
 #include "nmmSolid/material/solidMaterial/solidMaterial.H"
 
-#include "nmmSolid/material/linearElastic/linearElastic.H"
-
 #include <ostream>
 
 namespace nmm
@@ -9,27 +7,6 @@ namespace nmm
 
 namespace
 {
-
-template<class Type>
-bool add(const char* name)
-{
-    return solidMaterial::selector::add
-    (
-        name,
-        [](const entry& e) { return std::make_unique<Type>(e); },
-        &Type::keywords()
-    );
-}
-
-//- The built-in types are registered here, on first use, rather than by
-//  static objects in their own files: the library is static, and the
-//  linker drops object files that nothing refers to
-void addBuiltInTypes()
-{
-    static const bool added = add<linearElastic>("linearElastic");
-    (void)added;
-}
-
 
 std::string validTypes()
 {
@@ -61,7 +38,6 @@ std::unique_ptr<solidMaterial> naming(const std::string& name, Make&& make)
 
 std::unique_ptr<solidMaterial> solidMaterial::New(const entry& materialEntry)
 {
-    addBuiltInTypes();
     const std::string& name = materialEntry.keyword();
     if (!materialEntry.isDict())
     {
@@ -84,14 +60,12 @@ std::unique_ptr<solidMaterial> solidMaterial::New(const entry& materialEntry)
 
 std::vector<std::string> solidMaterial::types()
 {
-    addBuiltInTypes();
     return selector::names();
 }
 
 
 void solidMaterial::printHelp(std::ostream& os)
 {
-    addBuiltInTypes();
     bool first = true;
     for (const auto& [name, record] : selector::table())
     {

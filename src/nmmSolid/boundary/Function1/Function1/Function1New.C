@@ -1,11 +1,6 @@
 #include "nmmSolid/boundary/Function1/Function1/Function1.H"
 
 #include "nmmSolid/boundary/Function1/constant/constant.H"
-#include "nmmSolid/boundary/Function1/expression/expression.H"
-#include "nmmSolid/boundary/Function1/linearRamp/linearRamp.H"
-#include "nmmSolid/boundary/Function1/polynomial/polynomial.H"
-#include "nmmSolid/boundary/Function1/sine/sine.H"
-#include "nmmSolid/boundary/Function1/table/table.H"
 
 namespace nmm
 {
@@ -14,96 +9,6 @@ namespace
 {
 
 using namespace Function1Types;
-
-template<class Type>
-using factory = typename Function1<Type>::selector::factory;
-
-
-//- A type with an inline form ("pressure table (...);") and a dictionary form
-template<template<class> class F, class Type>
-factory<Type> inlineOrDictionary()
-{
-    return [](const std::string& name, const dictionary* coeffs, tokenReader* in)
-        -> std::unique_ptr<Function1<Type>>
-    {
-        if (in) return std::make_unique<F<Type>>(name, *in);
-        return std::make_unique<F<Type>>(name, *coeffs);
-    };
-}
-
-
-//- A type read from a dictionary only
-template<class Type, class Make>
-factory<Type> dictionaryOnly(const std::string& typeName, Make make)
-{
-    return [typeName, make]
-    (
-        const std::string& name,
-        const dictionary* coeffs,
-        tokenReader* in
-    ) -> std::unique_ptr<Function1<Type>>
-    {
-        if (in)
-        {
-            throw in->error(typeName + " '" + name + "' has no inline form;"
-                " write " + name + " { type " + typeName + "; ... }");
-        }
-        return make(name, *coeffs);
-    };
-}
-
-
-template<class Type>
-bool addTypes()
-{
-    using selector = typename Function1<Type>::selector;
-    using wave = typename sine<Type>::wave;
-
-    selector::add("constant", inlineOrDictionary<constant, Type>(),
-        &constant<Type>::keywords());
-    selector::add("uniform", inlineOrDictionary<constant, Type>(),
-        &constant<Type>::keywords());
-    selector::add("expression", inlineOrDictionary<expression, Type>(),
-        &expression<Type>::keywords());
-    selector::add("table", inlineOrDictionary<table, Type>(),
-        &table<Type>::keywords());
-    selector::add("polynomial", inlineOrDictionary<polynomial, Type>(),
-        &polynomial<Type>::keywords());
-    selector::add("linearRamp", dictionaryOnly<Type>("linearRamp",
-        [](const std::string& name, const dictionary& d)
-        {
-            return std::make_unique<linearRamp<Type>>(name, d);
-        }),
-        &linearRamp<Type>::keywords());
-    selector::add("sine", dictionaryOnly<Type>("sine",
-        [](const std::string& name, const dictionary& d)
-        {
-            return std::make_unique<sine<Type>>(name, wave::sine, d);
-        }),
-        &sine<Type>::keywords());
-    selector::add("cosine", dictionaryOnly<Type>("cosine",
-        [](const std::string& name, const dictionary& d)
-        {
-            return std::make_unique<sine<Type>>(name, wave::cosine, d);
-        }),
-        &sine<Type>::cosineKeywords());
-    return true;
-}
-
-
-//- The types are added here, next to New(), rather than each in its own
-//  file: the library is static, and a linker keeps only the object files
-//  a program refers to, so self-registering files would be dropped
-template<class Type>
-void registerTypes()
-{
-    static const bool added = addTypes<Type>();
-    (void)added;
-}
-
-// Also at start-up, so that a type listing sees them before any New()
-[[maybe_unused]] const bool scalarsAdded = (registerTypes<double>(), true);
-[[maybe_unused]] const bool vectorsAdded = (registerTypes<Eigen::Vector2d>(), true);
 
 
 template<class Type>
@@ -197,7 +102,6 @@ std::unique_ptr<Function1<Type>> Function1<Type>::New
     const dictionary& dict
 )
 {
-    registerTypes<Type>();
     // keyword, not e.keyword(): the entry may be a pattern that matched it
     const entry& e = dict.lookupEntry(keyword);
     std::unique_ptr<Function1> f = e.isDict()
@@ -222,7 +126,6 @@ std::unique_ptr<Function1<Type>> Function1<Type>::NewIfPresent
 template<class Type>
 std::vector<std::string> Function1<Type>::types()
 {
-    registerTypes<Type>();
     return selector::names();
 }
 

@@ -1,4 +1,5 @@
 #include "nmmSolid/boundary/Function1/constant/constant.H"
+#include "nmmSolid/boundary/Function1/Function1/addToFunction1Table.H"
 
 namespace nmm
 {
@@ -58,6 +59,16 @@ constant<Type>::constant(const std::string& name, const dictionary& coeffs)
 
 template class constant<double>;
 template class constant<Eigen::Vector2d>;
+
+
+namespace
+{
+
+[[maybe_unused]] const bool added =
+    addInlineOrDictionary<constant>("constant")
+ && addInlineOrDictionary<constant>("uniform");
+
+} // End anonymous namespace
 
 } // End namespace Function1Types
 } // End namespace nmm

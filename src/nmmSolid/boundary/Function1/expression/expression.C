@@ -1,4 +1,5 @@
 #include "nmmSolid/boundary/Function1/expression/expression.H"
+#include "nmmSolid/boundary/Function1/Function1/addToFunction1Table.H"
 
 #include <cmath>
 #include <sstream>
@@ -195,6 +196,15 @@ template struct expressionFor<double>;
 template struct expressionFor<Eigen::Vector2d>;
 template class expression<double>;
 template class expression<Eigen::Vector2d>;
+
+
+namespace
+{
+
+[[maybe_unused]] const bool added =
+    addInlineOrDictionary<expression>("expression");
+
+} // End anonymous namespace
 
 } // End namespace Function1Types
 } // End namespace nmm

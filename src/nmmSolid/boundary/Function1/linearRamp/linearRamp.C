@@ -1,4 +1,5 @@
 #include "nmmSolid/boundary/Function1/linearRamp/linearRamp.H"
+#include "nmmSolid/boundary/Function1/Function1/addToFunction1Table.H"
 
 #include <algorithm>
 #include <type_traits>
@@ -108,6 +109,29 @@ Type linearRamp<Type>::integral(double t0, double t1) const
 
 template class linearRamp<double>;
 template class linearRamp<Eigen::Vector2d>;
+
+
+namespace
+{
+
+template<class Type>
+bool addLinearRamp()
+{
+    return addDictionaryOnly<Type>
+    (
+        "linearRamp",
+        [](const std::string& key, const dictionary& coeffs)
+        {
+            return std::make_unique<linearRamp<Type>>(key, coeffs);
+        },
+        &linearRamp<Type>::keywords()
+    );
+}
+
+[[maybe_unused]] const bool added =
+    addLinearRamp<double>() && addLinearRamp<Eigen::Vector2d>();
+
+} // End anonymous namespace
 
 } // End namespace Function1Types
 } // End namespace nmm

@@ -1,4 +1,5 @@
 #include "nmmSolid/boundary/Function1/polynomial/polynomial.H"
+#include "nmmSolid/boundary/Function1/Function1/addToFunction1Table.H"
 
 #include <algorithm>
 #include <cmath>
@@ -139,6 +140,15 @@ Type polynomial<Type>::integral(double t0, double t1) const
 
 template class polynomial<double>;
 template class polynomial<Eigen::Vector2d>;
+
+
+namespace
+{
+
+[[maybe_unused]] const bool added =
+    addInlineOrDictionary<polynomial>("polynomial");
+
+} // End anonymous namespace
 
 } // End namespace Function1Types
 } // End namespace nmm

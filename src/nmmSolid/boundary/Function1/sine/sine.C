@@ -1,4 +1,5 @@
 #include "nmmSolid/boundary/Function1/sine/sine.H"
+#include "nmmSolid/boundary/Function1/Function1/addToFunction1Table.H"
 
 #include <cmath>
 #include <type_traits>
@@ -147,6 +148,40 @@ Type sine<Type>::integral(double t0, double t1) const
 
 template class sine<double>;
 template class sine<Eigen::Vector2d>;
+
+
+namespace
+{
+
+//- sine and cosine: one class, told the wave by its type name
+template<class Type>
+bool addWaves()
+{
+    using wave = typename sine<Type>::wave;
+    return addDictionaryOnly<Type>
+    (
+        "sine",
+        [](const std::string& key, const dictionary& coeffs)
+        {
+            return std::make_unique<sine<Type>>(key, wave::sine, coeffs);
+        },
+        &sine<Type>::keywords()
+    )
+    && addDictionaryOnly<Type>
+    (
+        "cosine",
+        [](const std::string& key, const dictionary& coeffs)
+        {
+            return std::make_unique<sine<Type>>(key, wave::cosine, coeffs);
+        },
+        &sine<Type>::cosineKeywords()
+    );
+}
+
+[[maybe_unused]] const bool added =
+    addWaves<double>() && addWaves<Eigen::Vector2d>();
+
+} // End anonymous namespace
 
 } // End namespace Function1Types
 } // End namespace nmm

@@ -1,4 +1,5 @@
 #include "nmmSolid/boundary/Function1/table/table.H"
+#include "nmmSolid/boundary/Function1/Function1/addToFunction1Table.H"
 
 #include "nmmSolid/global/fatalError/fatalError.H"
 
@@ -309,6 +310,15 @@ Type table<Type>::integral(double t0, double t1) const
 
 template class table<double>;
 template class table<Eigen::Vector2d>;
+
+
+namespace
+{
+
+[[maybe_unused]] const bool added =
+    addInlineOrDictionary<table>("table");
+
+} // End anonymous namespace
 
 } // End namespace Function1Types
 } // End namespace nmm

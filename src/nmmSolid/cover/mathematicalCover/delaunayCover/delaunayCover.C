@@ -17,6 +17,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(mathematicalCover, delaunayCover, "delaunay");
+
+
 namespace
 {
 

@@ -1,7 +1,5 @@
 #include "nmmSolid/cover/mathematicalCover/mathematicalCover/mathematicalCover.H"
 
-#include "nmmSolid/cover/mathematicalCover/delaunayCover/delaunayCover.H"
-#include "nmmSolid/cover/mathematicalCover/structuredCover/structuredCover.H"
 #include "nmmSolid/geometry/blockGeometry/blockGeometry.H"
 #include "nmmSolid/geometry/geometryCheck/geometryCheck.H"
 
@@ -15,30 +13,6 @@ namespace nmm
 
 namespace
 {
-
-template<class Type>
-bool add(const char* name)
-{
-    return mathematicalCover::selector::add
-    (
-        name,
-        [](const dictionary& d, const blockGeometry& g)
-        {
-            return std::make_unique<Type>(d, g);
-        },
-        &Type::keywords()
-    );
-}
-
-//- Registered on first use, not by static objects: the library is static
-//  and the linker drops object files that nothing refers to
-void addBuiltInTypes()
-{
-    static const bool added =
-        add<structuredCover>("structured")
-     && add<delaunayCover>("delaunay");
-    (void)added;
-}
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b)
 {
@@ -54,7 +28,6 @@ std::unique_ptr<mathematicalCover> mathematicalCover::New
     const blockGeometry& geometry
 )
 {
-    addBuiltInTypes();
     if (!coverDict.found("type"))
     {
         std::string valid;
@@ -73,14 +46,12 @@ std::unique_ptr<mathematicalCover> mathematicalCover::New
 
 std::vector<std::string> mathematicalCover::types()
 {
-    addBuiltInTypes();
     return selector::names();
 }
 
 
 void mathematicalCover::printHelp(std::ostream& os)
 {
-    addBuiltInTypes();
     for (const auto& [name, record] : selector::table())
     {
         os << "cover type ";

@@ -9,6 +9,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(mathematicalCover, structuredCover, "structured");
+
+
 const keywordTable& structuredCover::keywords()
 {
     static const keywordTable table = []

@@ -5,6 +5,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(patchSelector, blockPatchSelector, "block");
+
+
 const keywordTable& blockPatchSelector::keywords()
 {
     static const keywordTable table = []

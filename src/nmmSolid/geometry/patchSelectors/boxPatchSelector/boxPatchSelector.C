@@ -8,6 +8,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(patchSelector, boxPatchSelector, "box");
+
+
 const keywordTable& boxPatchSelector::keywords()
 {
     static const keywordTable table = []

@@ -5,6 +5,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(patchSelector, edgesPatchSelector, "edges");
+
+
 const keywordTable& edgesPatchSelector::keywords()
 {
     static const keywordTable table = []

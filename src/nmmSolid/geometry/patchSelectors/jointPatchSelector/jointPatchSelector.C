@@ -5,6 +5,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(patchSelector, jointPatchSelector, "joint");
+
+
 const keywordTable& jointPatchSelector::keywords()
 {
     static const keywordTable table = []

@@ -12,6 +12,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(patchSelector, polylinePatchSelector, "polyline");
+
+
 namespace
 {
 

@@ -8,6 +8,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(linearSolver, cholmod, "cholmod");
+
+
 namespace
 {
 

@@ -5,6 +5,9 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(linearSolver, simplicialLDLT, "simplicialLDLT");
+
+
 struct simplicialLDLT::impl
 {
     Eigen::SimplicialLDLT<sparseMatrix, Eigen::Lower> ldlt;
