@@ -9,15 +9,10 @@
 namespace nmm
 {
 
+addToRunTimeSelectionTable(contactSolver, penaltyOpenClose, "penalty");
+
 namespace
 {
-
-const bool added = contactSolver::selector::add
-(
-    "penalty",
-    [](const dictionary& d) { return std::make_unique<penaltyOpenClose>(d); },
-    &penaltyOpenClose::keywords()
-);
 
 //- The automatic penalties, as in DDA: stiff against the blocks, so that
 //  contacts barely penetrate, yet not so stiff that the system loses its

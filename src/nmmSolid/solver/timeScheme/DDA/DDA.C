@@ -5,17 +5,7 @@
 namespace nmm
 {
 
-namespace
-{
-
-const bool added = timeScheme::selector::add
-(
-    "DDA",
-    [](const dictionary& d) { return std::make_unique<DDA>(d); },
-    &DDA::keywords()
-);
-
-} // End anonymous namespace
+addToRunTimeSelectionTable(timeScheme, DDA, "DDA");
 
 
 const keywordTable& DDA::keywords()

@@ -5,17 +5,7 @@
 namespace nmm
 {
 
-namespace
-{
-
-const bool added = timeScheme::selector::add
-(
-    "Newmark",
-    [](const dictionary& d) { return std::make_unique<Newmark>(d); },
-    &Newmark::keywords()
-);
-
-} // End anonymous namespace
+addToRunTimeSelectionTable(timeScheme, Newmark, "Newmark");
 
 
 const keywordTable& Newmark::keywords()
