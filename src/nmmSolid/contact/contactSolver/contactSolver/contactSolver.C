@@ -1,7 +1,5 @@
 #include "nmmSolid/contact/contactSolver/contactSolver/contactSolver.H"
 
-#include <ostream>
-
 namespace nmm
 {
 
@@ -37,12 +35,7 @@ std::vector<std::string> contactSolver::types()
 
 void contactSolver::printHelp(std::ostream& os)
 {
-    for (const auto& [name, record] : selector::table())
-    {
-        if (record.keywords) record.keywords->printHelp(os);
-        else os << name << "\n";
-        os << "\n";
-    }
+    selector::printKeywords(os);
 }
 
 

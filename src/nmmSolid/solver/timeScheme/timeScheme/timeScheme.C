@@ -1,7 +1,5 @@
 #include "nmmSolid/solver/timeScheme/timeScheme/timeScheme.H"
 
-#include <ostream>
-
 namespace nmm
 {
 
@@ -21,12 +19,7 @@ std::vector<std::string> timeScheme::types()
 
 void timeScheme::printHelp(std::ostream& os)
 {
-    for (const auto& [name, record] : selector::table())
-    {
-        if (record.keywords) record.keywords->printHelp(os);
-        else os << name << "\n";
-        os << "\n";
-    }
+    selector::printKeywords(os);
 }
 
 } // End namespace nmm

@@ -1,0 +1,197 @@
+// nmm::stepDriver's policy on a solid that converges only for steps up to
+// a given length: cut and redo from the saved state, grow after uncut
+// steps, stop below minDeltaT or when a cut is futile, reach a time
+// exactly, and grow from the proposal when a fit shortened the step.
+
+#include "nmmSolid/model/stepDriver/stepDriver.H"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <vector>
+
+using nmm::solidState;
+using nmm::stepDriver;
+using nmm::stepReport;
+using testing::HasSubstr;
+
+namespace
+{
+
+//- Converges for steps of at most longest; records every attempt
+class fakeSolid
+:
+    public nmm::steppable
+{
+public:
+    double longest;
+    bool futile = false;
+    bool isDynamic = true;
+    double ratio = 0;
+    std::vector<double> attempts;
+    //- Whether each attempt started from the saved state
+    std::vector<bool> cleanStarts;
+    int restores = 0;
+    int cuts = 0;
+    solidState state, trial;
+    stepReport last;
+
+    explicit fakeSolid(double longestStep) : longest(longestStep) {}
+
+    stepReport solveStep(double dt) override
+    {
+        attempts.push_back(dt);
+        cleanStarts.push_back(state.D.size() == 0);
+        const solidState start = state;
+        // Scribbles on its state, as a solve may (the initial acceleration
+        // of a Newmark step): each try must start from the saved one
+        state.D = Eigen::VectorXd::Constant(1, -1);
+        stepReport r;
+        r.deltaT = dt;
+        r.cuts = cuts;
+        r.displacementRatio = ratio;
+        r.converged = dt <= longest*(1 + 1e-12);
+        if (!r.converged)
+        {
+            r.cutReason = "too long";
+            r.cutIsFutile = futile;
+            ++cuts;
+            return r;
+        }
+        trial = start;
+        trial.time = start.time + dt;
+        last = r;
+        return r;
+    }
+    void acceptStep() override
+    {
+        state = trial;
+        last.cuts = cuts;
+        cuts = 0;
+    }
+    solidState saveState() const override { return state; }
+    void restoreState(const solidState& s) override { state = s; ++restores; }
+    double time() const override { return state.time; }
+    const stepReport& lastStep() const override { return last; }
+    bool dynamic() const override { return isDynamic; }
+};
+
+
+nmm::stepControlSettings settings()
+{
+    nmm::stepControlSettings s;
+    s.maxDisplacementRatio = 0.005;
+    s.maxDeltaT = 1;
+    s.minDeltaT = 1e-3;
+    s.growth = 2;
+    s.cutBack = 0.5;
+    return s;
+}
+
+} // End anonymous namespace
+
+
+TEST(stepDriver, cutsAndRedoesFromTheSavedState)
+{
+    fakeSolid solid(0.3);
+    stepDriver driver(solid, settings(), 1, true);
+    const auto done = driver.advance(10);
+    ASSERT_TRUE(done);
+    EXPECT_EQ(solid.attempts, (std::vector<double>{1, 0.5, 0.25}));
+    EXPECT_EQ(solid.restores, 2);
+    EXPECT_EQ(done.deltaT, 0.25);
+    EXPECT_DOUBLE_EQ(solid.time(), 0.25);
+    EXPECT_EQ(solid.cleanStarts, (std::vector<bool>{true, true, true}));
+}
+
+
+TEST(stepDriver, growsAfterAnUncutStepUpToMaxDeltaT)
+{
+    fakeSolid solid(10);
+    stepDriver driver(solid, settings(), 0.2, true);
+    std::vector<double> steps;
+    for (int i = 0; i < 4; ++i) steps.push_back(driver.advance(10).deltaT);
+    EXPECT_EQ(steps, (std::vector<double>{0.2, 0.4, 0.8, 1}));
+}
+
+
+TEST(stepDriver, afterACutGrowsBackToTheNominalStepWhenNotAdjustable)
+{
+    fakeSolid solid(0.3);
+    stepDriver driver(solid, settings(), 0.4, false);
+    EXPECT_EQ(driver.advance(10).deltaT, 0.2);
+    // A cut step does not grow the next one; then growth, capped by 0.4
+    EXPECT_EQ(driver.advance(10).deltaT, 0.2);
+    solid.longest = 10;
+    EXPECT_EQ(driver.advance(10).deltaT, 0.4);
+    EXPECT_EQ(driver.advance(10).deltaT, 0.4);
+}
+
+
+TEST(stepDriver, stopsBelowMinDeltaT)
+{
+    fakeSolid solid(1e-6);
+    stepDriver driver(solid, settings(), 1, true);
+    const auto done = driver.advance(10);
+    EXPECT_FALSE(done);
+    EXPECT_THAT(done.failure, HasSubstr("minDeltaT 0.001"));
+    EXPECT_EQ(done.cutReason, "too long");
+    // Left at the last accepted state
+    EXPECT_EQ(solid.time(), 0);
+    EXPECT_EQ(solid.state.D.size(), 0);
+}
+
+
+TEST(stepDriver, aFutileCutStopsAtOnce)
+{
+    fakeSolid solid(0.1);
+    solid.futile = true;
+    stepDriver driver(solid, settings(), 1, true);
+    const auto done = driver.advance(10);
+    EXPECT_FALSE(done);
+    EXPECT_EQ(solid.attempts.size(), 1u);
+    EXPECT_THAT(done.failure, HasSubstr("a shorter step is the same problem"));
+}
+
+
+TEST(stepDriver, advanceToReachesTheTimeExactly)
+{
+    fakeSolid solid(0.3);
+    stepDriver driver(solid, settings(), 1, true);
+    const auto done = driver.advanceTo(1);
+    ASSERT_TRUE(done);
+    EXPECT_DOUBLE_EQ(solid.time(), 1);
+    EXPECT_GT(done.steps, 1);
+    // No step beyond the end: the last is what was left
+    double sum = 0;
+    for (double a : solid.attempts) if (a <= 0.3) sum += a;
+    EXPECT_DOUBLE_EQ(sum, 1);
+}
+
+
+TEST(stepDriver, aStepTheFitShortenedDoesNotShortenTheNext)
+{
+    fakeSolid solid(10);
+    stepDriver driver(solid, settings(), 0.5, true);
+    // The fit halves the proposal (a write time nearby), once
+    bool fitted = false;
+    const auto halveOnce = [&](double dt) { return fitted ? dt : (fitted = true, dt/2); };
+    EXPECT_EQ(driver.advance(10, halveOnce).deltaT, 0.25);
+    EXPECT_EQ(driver.advance(10, halveOnce).deltaT, 1);
+}
+
+
+TEST(stepDriver, aDynamicStepNearTheDisplacementLimitHoldsTheNext)
+{
+    fakeSolid solid(10);
+    solid.ratio = 0.005;
+    stepDriver driver(solid, settings(), 0.5, true);
+    driver.advance(10);
+    // 0.9 maxDisplacementRatio/ratio = 0.9 times the last step
+    EXPECT_DOUBLE_EQ(driver.advance(10).deltaT, 0.45);
+    // A static step's ratio is the user's load step: it does not limit
+    // the one after it (0.405 x growth 2)
+    solid.isDynamic = false;
+    EXPECT_DOUBLE_EQ(driver.advance(10).deltaT, 0.405);
+    EXPECT_DOUBLE_EQ(driver.advance(10).deltaT, 0.81);
+}
