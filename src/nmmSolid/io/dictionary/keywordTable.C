@@ -295,7 +295,8 @@ void keywordTable::printHelp(std::ostream& os) const
     os << "\n";
     for (const auto& k : keywords_)
     {
-        os << "    " << std::left << std::setw(22) << k.name
+        // A name as long as its column still has a space after it
+        os << "    " << std::left << std::setw(21) << k.name << ' '
            << std::setw(11) << kindName(k.kind) << k.meaning;
         if (!k.unit.empty()) os << " [" << k.unit << "]";
         os << "\n" << std::string(37, ' ');

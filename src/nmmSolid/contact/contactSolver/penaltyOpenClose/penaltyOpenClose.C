@@ -50,8 +50,8 @@ const keywordTable& penaltyOpenClose::keywords()
 {
     static const keywordTable table = []
     {
-        keywordTable t("penalty", "penalty springs and the open-close"
-            " iteration (contact { method penalty; })");
+        keywordTable t("contact", "method penalty: penalty springs and the"
+            " open-close iteration");
         declareMethod(t);
         t.any("normalPenalty", "normal spring stiffness [N/m per m of"
             " thickness]: auto (50 x largest E) or a number > 0")
