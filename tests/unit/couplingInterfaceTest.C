@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -322,6 +324,25 @@ TEST(couplingInterface, aFreeBlockExpandsByItsThermalStrainWithoutStress)
     ci.setTemperature({300});
     stepOnce(ci);
     EXPECT_LT(ci.displacement("top")[0].norm(), 1e-15);
+}
+
+
+TEST(couplingInterface, advanceToReachesTheCouplingTimeInTheSolidsSteps)
+{
+    // A static block heated in one coupling step of length 1: the step
+    // driver takes it (one step of the nominal length) and logs the try
+    const auto c = thermalBlock(false);
+    auto m = c->model();
+    couplingInterface ci(*m);
+    ci.setTemperature({350});
+    std::ostringstream log;
+    const auto done = ci.advanceTo(1, &log);
+    ASSERT_TRUE(done) << done.failure;
+    EXPECT_EQ(done.steps, 1);
+    EXPECT_DOUBLE_EQ(ci.time(), 1);
+    EXPECT_NE(log.str().find("step from 0 by 1"), std::string::npos) << log.str();
+    const double eps = (1 + 0.3)*1e-5*50;
+    EXPECT_NEAR(ci.displacement("top")[0].y(), eps*2, 1e-12*eps);
 }
 
 

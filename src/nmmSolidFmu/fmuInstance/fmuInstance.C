@@ -2,7 +2,6 @@
 
 #include "nmmSolid/io/case/caseFolder/caseFolder.H"
 #include "nmmSolid/output/solidOutput/solidOutput.H"
-#include "nmmSolid/model/stepDriver/stepDriver.H"
 
 #include <algorithm>
 #include <cmath>
@@ -437,13 +436,7 @@ void fmuInstance::doStep(double t, double h)
     {
         throw fmuError("communicationStepSize must be positive and finite, got " + text(h));
     }
-    const stepControlSettings settings = model_->controls()
-        ? model_->controls()->stepControl() : stepController::read(dictionary("stepControl"));
-    // A driver per communication step, so that a step repeated after
-    // fmi3SetFMUState starts from the same step length
-    stepDriver driver(*solid_, settings, h, model_->scheme().dynamic());
-    driver.setLog(log_, true);
-    const stepDriver::outcome done = driver.advanceTo(t0 + h);
+    const stepDriver::outcome done = solid_->advanceTo(t0 + h, &log_);
     if (!done)
     {
         flushLog();

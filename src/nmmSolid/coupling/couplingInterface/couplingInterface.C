@@ -519,6 +519,21 @@ double couplingInterface::maxDeltaT() const
 }
 
 
+stepDriver::outcome couplingInterface::advanceTo(double tEnd, std::ostream* log)
+{
+    const auto* controls = model_.controls();
+    stepDriver driver
+    (
+        *this,
+        controls ? controls->stepControl() : stepController::read(dictionary("stepControl")),
+        tEnd - time(),
+        model_.dynamic()
+    );
+    if (log) driver.setLog(*log, true);
+    return driver.advanceTo(tEnd);
+}
+
+
 void couplingInterface::setDeltaT(double dt)
 {
     if (!(dt > 0) || !std::isfinite(dt))
