@@ -22,25 +22,6 @@ namespace
 
 using label = physicalCover::label;
 
-Eigen::Matrix2d rotation(double w)
-{
-    Eigen::Matrix2d R;
-    R << std::cos(w), -std::sin(w),
-         std::sin(w), std::cos(w);
-    return R;
-}
-
-
-//- sigma (xx, yy, xy, zz) turned by R: R S R^T in the plane
-Eigen::Vector4d rotated(const Eigen::Vector4d& s, const Eigen::Matrix2d& R)
-{
-    Eigen::Matrix2d S;
-    S << s[0], s[2],
-         s[2], s[1];
-    const Eigen::Matrix2d Sr = R*S*R.transpose();
-    return {Sr(0, 0), Sr(1, 1), Sr(0, 1), s[3]};
-}
-
 } // End anonymous namespace
 
 
@@ -98,6 +79,10 @@ nmmSolidModel::nmmSolidModel(parts p)
     (
         *space_, elementMaterials(), parts_.properties->thickness(), std::move(rules),
         parts_.gravity
+    );
+    update_ = std::make_unique<updatedLagrangian>
+    (
+        *space_, *assembler_, parts_.geometry->nBlocks(), parts_.largeDisplacement
     );
     if (parts_.scheme->dynamic())
     {
@@ -352,99 +337,17 @@ void nmmSolidModel::updateTrial(const Eigen::VectorXd& dd, double dt)
     ++trial_.timeIndex;
     const auto patchD0 = space_->patchDisplacements(state_.D);
     const auto dPatch = space_->patchDisplacements(dd);
-    std::vector<double> rotations;
-    updateStresses(patchD0, dPatch, rotations);
+    const std::vector<double> rotations = update_->updateStresses
+    (
+        patchD0, dPatch, elementTemperatureIncrement(), trial_.sigma
+    );
     if (!temperature_.empty()) trial_.temperature = temperature_;
-    updateMotion(dd, dt);
-    if (parts_.largeDisplacement) correctRotations(patchD0, rotations);
+    trial_.D = state_.D + dd;
+    parts_.scheme->update(dd, dt, state_.V, state_.A, trial_.V, trial_.A);
+    update_->correctRotations(patchD0, rotations, parts_.scheme->dynamic(), trial_);
     if (contacts()) trial_.contacts = contacts()->records();
     trialReady_ = true;
     timing_["update"] += clock.elapsed();
-}
-
-
-void nmmSolidModel::updateStresses
-(
-    const Eigen::Matrix2Xd& patchD0,
-    const Eigen::Matrix2Xd& dPatch,
-    std::vector<double>& rotations
-)
-{
-    const auto& els = parts_.elements->elements();
-    rotations.assign(els.size(), 0.0);
-    const std::vector<double> dTemperature = elementTemperatureIncrement();
-    for (std::size_t e = 0; e < els.size(); ++e)
-    {
-        const auto T = space_->currentTriangle(label(e), patchD0);
-        const auto B = manifoldElement::strainMatrix(T);
-        manifoldElement::vector6 de;
-        for (int k = 0; k < 3; ++k) de.segment<2>(2*k) = dPatch.col(els[e].patches[k]);
-
-        double w = 0;
-        for (int k = 0; k < 3; ++k) w += 0.5*(B(0, 2*k)*de[2*k + 1] - B(1, 2*k + 1)*de[2*k]);
-        rotations[e] = w;
-
-        const auto& m = assembler_->material(label(e));
-        Eigen::Vector4d& s = trial_.sigma[e];
-        if (parts_.largeDisplacement) s = rotated(s, rotation(w));
-        const double dT = dTemperature.empty() ? 0.0 : dTemperature[e];
-        const Eigen::Vector3d ds = m.D*(B*de - assembler_->thermalStrain(label(e), dT));
-        s.head<3>() += ds;
-        s[3] += m.zzFactor*(ds[0] + ds[1]) + m.zzThermal*dT;
-    }
-}
-
-
-void nmmSolidModel::updateMotion(const Eigen::VectorXd& dd, double dt)
-{
-    trial_.D = state_.D + dd;
-    parts_.scheme->update(dd, dt, state_.V, state_.A, trial_.V, trial_.A);
-}
-
-
-void nmmSolidModel::correctRotations
-(
-    const Eigen::Matrix2Xd& patchD0,
-    const std::vector<double>& rotations
-)
-{
-    const auto& pc = *parts_.elements;
-    const auto& els = pc.elements();
-
-    // Block centroids and patch rotations at the start of the step
-    std::vector<Eigen::Vector2d> moment(parts_.geometry->nBlocks(), Eigen::Vector2d::Zero());
-    std::vector<double> blockArea(parts_.geometry->nBlocks(), 0.0);
-    std::vector<double> patchW(pc.nPatches(), 0.0), patchArea(pc.nPatches(), 0.0);
-    for (std::size_t e = 0; e < els.size(); ++e)
-    {
-        const auto T = space_->currentTriangle(label(e), patchD0);
-        const double a = els[e].moments.area;
-        moment[els[e].block] += T*els[e].moments.w;
-        blockArea[els[e].block] += a;
-        for (const label p : els[e].patches)
-        {
-            patchW[p] += a*rotations[e];
-            patchArea[p] += a;
-        }
-    }
-
-    for (std::size_t u = 0; u < pc.unknownPatches().size(); ++u)
-    {
-        const label p = pc.unknownPatches()[u];
-        const label b = pc.patches()[p].block;
-        const double w = patchArea[p] > 0 ? patchW[p]/patchArea[p] : 0;
-        const Eigen::Matrix2d R = rotation(w);
-        Eigen::Matrix2d W;
-        W << 0, -w,
-             w, 0;
-        const Eigen::Vector2d x = parts_.cover->nodes()[pc.patches()[p].node] + patchD0.col(p);
-        const Eigen::Vector2d c = moment[b]/blockArea[b];
-        trial_.D.segment<2>(2*u) += (R - Eigen::Matrix2d::Identity() - W)*(x - c);
-        if (parts_.scheme->dynamic())
-        {
-            trial_.V.segment<2>(2*u) = R*trial_.V.segment<2>(2*u);
-        }
-    }
 }
 
 

@@ -1,0 +1,130 @@
+#include "nmmSolid/solver/updatedLagrangian/updatedLagrangian.H"
+
+#include "nmmSolid/cover/mathematicalCover/mathematicalCover/mathematicalCover.H"
+
+#include <cmath>
+
+namespace nmm
+{
+
+namespace
+{
+
+using label = physicalCover::label;
+
+Eigen::Matrix2d rotation(double w)
+{
+    Eigen::Matrix2d R;
+    R << std::cos(w), -std::sin(w),
+         std::sin(w), std::cos(w);
+    return R;
+}
+
+
+//- sigma (xx, yy, xy, zz) turned by R: R S R^T in the plane
+Eigen::Vector4d rotated(const Eigen::Vector4d& s, const Eigen::Matrix2d& R)
+{
+    Eigen::Matrix2d S;
+    S << s[0], s[2],
+         s[2], s[1];
+    const Eigen::Matrix2d Sr = R*S*R.transpose();
+    return {Sr(0, 0), Sr(1, 1), Sr(0, 1), s[3]};
+}
+
+} // End anonymous namespace
+
+
+updatedLagrangian::updatedLagrangian
+(
+    const manifoldSpace& space,
+    const nmmAssembler& assembler,
+    std::size_t nBlocks,
+    bool largeDisplacement
+)
+:
+    space_(space),
+    assembler_(assembler),
+    nBlocks_(nBlocks),
+    largeDisplacement_(largeDisplacement)
+{}
+
+
+std::vector<double> updatedLagrangian::updateStresses
+(
+    const Eigen::Matrix2Xd& patchD0,
+    const Eigen::Matrix2Xd& dPatch,
+    const std::vector<double>& dTemperature,
+    std::vector<Eigen::Vector4d>& sigma
+) const
+{
+    const auto& els = space_.elements().elements();
+    std::vector<double> rotations(els.size(), 0.0);
+    for (std::size_t e = 0; e < els.size(); ++e)
+    {
+        const auto T = space_.currentTriangle(label(e), patchD0);
+        const auto B = manifoldElement::strainMatrix(T);
+        manifoldElement::vector6 de;
+        for (int k = 0; k < 3; ++k) de.segment<2>(2*k) = dPatch.col(els[e].patches[k]);
+
+        double w = 0;
+        for (int k = 0; k < 3; ++k) w += 0.5*(B(0, 2*k)*de[2*k + 1] - B(1, 2*k + 1)*de[2*k]);
+        rotations[e] = w;
+
+        const auto& m = assembler_.material(label(e));
+        Eigen::Vector4d& s = sigma[e];
+        if (largeDisplacement_) s = rotated(s, rotation(w));
+        const double dT = dTemperature.empty() ? 0.0 : dTemperature[e];
+        const Eigen::Vector3d ds = m.D*(B*de - assembler_.thermalStrain(label(e), dT));
+        s.head<3>() += ds;
+        s[3] += m.zzFactor*(ds[0] + ds[1]) + m.zzThermal*dT;
+    }
+    return rotations;
+}
+
+
+void updatedLagrangian::correctRotations
+(
+    const Eigen::Matrix2Xd& patchD0,
+    const std::vector<double>& rotations,
+    bool rotateVelocity,
+    fieldState& s
+) const
+{
+    if (!largeDisplacement_) return;
+    const auto& pc = space_.elements();
+    const auto& els = pc.elements();
+
+    // Block centroids and patch rotations at the start of the step
+    std::vector<Eigen::Vector2d> moment(nBlocks_, Eigen::Vector2d::Zero());
+    std::vector<double> blockArea(nBlocks_, 0.0);
+    std::vector<double> patchW(pc.nPatches(), 0.0), patchArea(pc.nPatches(), 0.0);
+    for (std::size_t e = 0; e < els.size(); ++e)
+    {
+        const auto T = space_.currentTriangle(label(e), patchD0);
+        const double a = els[e].moments.area;
+        moment[els[e].block] += T*els[e].moments.w;
+        blockArea[els[e].block] += a;
+        for (const label p : els[e].patches)
+        {
+            patchW[p] += a*rotations[e];
+            patchArea[p] += a;
+        }
+    }
+
+    for (std::size_t u = 0; u < pc.unknownPatches().size(); ++u)
+    {
+        const label p = pc.unknownPatches()[u];
+        const label b = pc.patches()[p].block;
+        const double w = patchArea[p] > 0 ? patchW[p]/patchArea[p] : 0;
+        const Eigen::Matrix2d R = rotation(w);
+        Eigen::Matrix2d W;
+        W << 0, -w,
+             w, 0;
+        const Eigen::Vector2d x = space_.cover().nodes()[pc.patches()[p].node] + patchD0.col(p);
+        const Eigen::Vector2d c = moment[b]/blockArea[b];
+        s.D.segment<2>(2*u) += (R - Eigen::Matrix2d::Identity() - W)*(x - c);
+        if (rotateVelocity) s.V.segment<2>(2*u) = R*s.V.segment<2>(2*u);
+    }
+}
+
+} // End namespace nmm
