@@ -136,7 +136,7 @@ int main()
         //    the whole pressure, as the loads do not depend on time.
         stepDriver driver
         (
-            model, stepController::read(dictionary("stepControl")), 1, false
+            model, model.stepControl(), 1, false
         );
         const stepDriver::outcome done = driver.advanceTo(1);
         if (!done) throw fatalError(done.failure);

@@ -521,11 +521,10 @@ double couplingInterface::maxDeltaT() const
 
 stepDriver::outcome couplingInterface::advanceTo(double tEnd, std::ostream* log)
 {
-    const auto* controls = model_.controls();
     stepDriver driver
     (
         *this,
-        controls ? controls->stepControl() : stepController::read(dictionary("stepControl")),
+        model_.stepControl(),
         tEnd - time(),
         model_.dynamic()
     );

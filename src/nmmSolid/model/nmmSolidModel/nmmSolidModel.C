@@ -62,6 +62,8 @@ nmmSolidModel::nmmSolidModel(parts p)
     parts_(std::move(p))
 {
     if (!parts_.scheme) parts_.scheme = std::make_unique<staticScheme>();
+    stepControl_ = parts_.controls
+        ? parts_.controls->stepControl() : stepController::read(dictionary("stepControl"));
     for (const auto& b : parts_.geometry->blocks())
     {
         materialOfBlock_.push_back(parts_.properties->materialId(b.material(), b.where()));
@@ -113,9 +115,7 @@ void nmmSolidModel::createContacts()
     p.thickness = parts_.properties->thickness();
     p.largestModulus = largestModulus_;
     p.halfSize = halfSize_;
-    p.maxDisplacementRatio = parts_.controls
-        ? parts_.controls->stepControl().maxDisplacementRatio
-        : stepController::read(dictionary("stepControl")).maxDisplacementRatio;
+    p.maxDisplacementRatio = stepControl_.maxDisplacementRatio;
     p.dynamic = parts_.scheme->dynamic();
     parts_.contactMethod->setUp(std::move(p));
 }

@@ -103,11 +103,10 @@ void solidRun::start()
     log_ << "\nStarting time loop\n" << std::endl;
     functions_->start();
     model_->setLog(log_);
-    const auto* controls = model_->controls();
     driver_.emplace
     (
         *model_,
-        controls ? controls->stepControl() : stepController::read(dictionary("stepControl")),
+        model_->stepControl(),
         runTime_.deltaTValue(),
         runTime_.adjustTimeStep()
     );
