@@ -162,7 +162,8 @@ stepReport nmmSolidModel::solveStep(double dt)
     Eigen::VectorXd dd;
     if (!parts_.contactMethod)
     {
-        dd = solveSystem(sys.K, sys.f, dt);
+        factoriseSystem(sys.K, dt);
+        dd = solveFactorised(sys.f, dt);
     }
     else if (!solveWithContacts(sys, dt, report, dd))
     {
@@ -175,12 +176,7 @@ stepReport nmmSolidModel::solveStep(double dt)
 }
 
 
-Eigen::VectorXd nmmSolidModel::solveSystem
-(
-    const Eigen::SparseMatrix<double>& K,
-    const Eigen::VectorXd& f,
-    double dt
-)
+void nmmSolidModel::factoriseSystem(const Eigen::SparseMatrix<double>& K, double dt)
 {
     cpuTime clock;
     try
@@ -226,8 +222,12 @@ Eigen::VectorXd nmmSolidModel::solveSystem
     }
     timing_["factorisation"] += clock.elapsed();
     checkConditioning(dt);
+}
 
-    clock = cpuTime();
+
+Eigen::VectorXd nmmSolidModel::solveFactorised(const Eigen::VectorXd& f, double dt)
+{
+    const cpuTime clock;
     Eigen::VectorXd dd = parts_.solver->solve(f);
     timing_["solution"] += clock.elapsed();
     if (!dd.allFinite())
@@ -252,9 +252,20 @@ bool nmmSolidModel::solveWithContacts
 )
 {
     contactSolver::services services;
-    services.solve = [this, dt](const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& f)
+    services.factorise = [this, dt](const Eigen::SparseMatrix<double>& K)
     {
-        return solveSystem(K, f, dt);
+        factoriseSystem(K, dt);
+    };
+    services.solve = [this, dt](const Eigen::VectorXd& f)
+    {
+        return solveFactorised(f, dt);
+    };
+    services.solveColumns = [this](const Eigen::MatrixXd& F)
+    {
+        const cpuTime clock;
+        Eigen::MatrixXd X = parts_.solver->solveColumns(F);
+        timing_["solution"] += clock.elapsed();
+        return X;
     };
     services.timing = &timing_;
     services.log = log_;

@@ -162,7 +162,9 @@ void solidRun::printStep() const
     {
         log_ << "    contacts: open " << r.contacts[0] << ", bonded " << r.contacts[1]
             << ", sliding " << r.contacts[2] << "; iterations " << r.iterations
-            << ", cuts " << r.cuts << ", max penetration " << r.maxPenetration;
+            << ", cuts " << r.cuts << ", max penetration " << r.maxPenetration
+            << ", factorisations " << r.factorisations;
+        if (r.factorUpdates) log_ << " (updated " << r.factorUpdates << ')';
         if (r.overlapsAtStart) log_ << ", overlaps found " << r.overlapsAtStart;
         log_ << '\n';
     }

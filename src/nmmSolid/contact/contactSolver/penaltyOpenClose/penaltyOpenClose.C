@@ -121,7 +121,7 @@ bool penaltyOpenClose::solve
     addTime(srv, "contact detection", clock);
     const Eigen::VectorXd loads = sys.f + contacts_->pressureLoads(n);
     clock = cpuTime();
-    const sparseMatrix pattern = contacts_->withPattern(sys.K);
+    pattern_ = contacts_->withPattern(sys.K);
     addTime(srv, "contact assembly", clock);
 
     bool settled = false;
@@ -129,16 +129,16 @@ bool penaltyOpenClose::solve
     // then on: each solve's increment is taken only as far as it lowers
     // the step's potential, which cannot cycle
     bool damped = false;
+    factorised_ = false;
     dd = Eigen::VectorXd::Zero(n);
     for (int it = 1; it <= given_.maxOpenCloseIterations && !settled; ++it)
     {
         clock = cpuTime();
-        sparseMatrix K = pattern;
-        contacts_->addSprings(K);
+        const std::vector<double> k = contacts_->springStiffnesses();
         const Eigen::VectorXd f = loads + contacts_->forces(n);
         addTime(srv, "contact assembly", clock);
 
-        const Eigen::VectorXd delta = srv.solve(K, f) - dd;
+        const Eigen::VectorXd delta = solveWithStates(k, f, dd, srv, report);
 
         clock = cpuTime();
         double alpha = 1;
@@ -168,6 +168,68 @@ bool penaltyOpenClose::solve
         ? patchDD.colwise().norm().maxCoeff()/halfSize_ : 0.0;
     report.cutReason = cutReason(settled, report);
     return report.cutReason.empty();
+}
+
+
+Eigen::VectorXd penaltyOpenClose::solveWithStates
+(
+    const std::vector<double>& k,
+    const Eigen::VectorXd& f,
+    const Eigen::VectorXd& dd,
+    const services& srv,
+    stepReport& report
+)
+{
+    // The increment from dd, not the solution itself: near convergence it
+    // is small against dd, and its rounding must be its own
+    lastSolve_.clear();
+    if (factorised_ && updateIsCheaper(k))
+    {
+        const cpuTime clock;
+        Eigen::VectorXd x;
+        const bool ok = update_.solve(k, -update_.residual(k, dd, f), srv.solveColumns, x);
+        addTime(srv, "factor update", clock);
+        if (ok)
+        {
+            ++report.factorUpdates;
+            lastSolve_ = "factor updated, rank " + std::to_string(update_.rank(k).first);
+            return x;
+        }
+        std::ostringstream why;
+        why << "update's residual " << update_.lastResidual() << ", refactorised";
+        lastSolve_ = why.str();
+    }
+    refactorise(k, srv);
+    ++report.factorisations;
+    const cpuTime clock;
+    Eigen::VectorXd x = srv.solve(f - K1_.selfadjointView<Eigen::Lower>()*dd);
+    solveTime_ = clock.elapsed();
+    return x;
+}
+
+
+bool penaltyOpenClose::updateIsCheaper(const std::vector<double>& k) const
+{
+    // One solve per new column, and S's LU (about m^3 flops at ~1 Gflop/s)
+    const auto [m, fresh] = update_.rank(k);
+    const double dense = 1e-9*double(m)*double(m)*double(m);
+    return m <= maxUpdateRank && double(fresh)*solveTime_ + dense < factorTime_;
+}
+
+
+void penaltyOpenClose::refactorise(const std::vector<double>& k, const services& srv)
+{
+    cpuTime clock;
+    K1_ = pattern_;
+    contacts_->addSprings(K1_);
+    addTime(srv, "contact assembly", clock);
+    clock = cpuTime();
+    srv.factorise(K1_);
+    factorTime_ = clock.elapsed();
+    std::vector<lowRankUpdate::term> terms(k.size());
+    for (std::size_t j = 0; j < k.size(); ++j) terms[j] = {&contacts_->springTerms(j), k[j]};
+    update_.reset(K1_, std::move(terms));
+    factorised_ = true;
 }
 
 
@@ -209,6 +271,7 @@ void penaltyOpenClose::logIteration
     if (c.chattering) *log << ", chattering " << c.chattering;
     if (c.bondsBroken) *log << ", bonds broken " << c.bondsBroken;
     if (stepLength < 1) *log << ", step length " << stepLength;
+    if (!lastSolve_.empty()) *log << " (" << lastSolve_ << ')';
     *log << '\n';
 }
 

@@ -131,7 +131,7 @@ void cholmod::factoriseNumeric(const sparseMatrix& K)
 }
 
 
-Eigen::VectorXd cholmod::solveFactorised(const Eigen::VectorXd& f) const
+Eigen::MatrixXd cholmod::solveFactorised(const Eigen::MatrixXd& f) const
 {
     return impl_->llt.solve(f);
 }

@@ -95,21 +95,35 @@ void linearSolver::factorise(const sparseMatrix& K)
 }
 
 
-Eigen::VectorXd linearSolver::solve(const Eigen::VectorXd& f) const
+void linearSolver::checkSolvable(long rows) const
 {
     if (!factorised_)
     {
         throw fatalError("linearSolver " + name_ + ": solve() without a"
             " successful factorise()");
     }
-    if (f.size() != rows_)
+    if (rows != rows_)
     {
         throw fatalError("linearSolver " + name_ + ": right-hand side of size "
-            + std::to_string(f.size()) + " for a system of "
+            + std::to_string(rows) + " for a system of "
             + std::to_string(rows_) + " unknowns");
     }
+}
+
+
+Eigen::VectorXd linearSolver::solve(const Eigen::VectorXd& f) const
+{
+    checkSolvable(f.size());
     if (rows_ == 0) return Eigen::VectorXd();
     return solveFactorised(f);
+}
+
+
+Eigen::MatrixXd linearSolver::solveColumns(const Eigen::MatrixXd& F) const
+{
+    checkSolvable(F.rows());
+    if (rows_ == 0 || F.cols() == 0) return Eigen::MatrixXd(F.rows(), F.cols());
+    return solveFactorised(F);
 }
 
 

@@ -49,7 +49,7 @@ void simplicialLDLT::factoriseNumeric(const sparseMatrix& K)
 }
 
 
-Eigen::VectorXd simplicialLDLT::solveFactorised(const Eigen::VectorXd& f) const
+Eigen::MatrixXd simplicialLDLT::solveFactorised(const Eigen::MatrixXd& f) const
 {
     return impl_->ldlt.solve(f);
 }
