@@ -184,10 +184,11 @@ TEST(solutionControlsErrors, contactMethodIsOneThatExists)
     // A method is refused where it is read, with the ones there are, not
     // accepted and refused later when the model is built
     const IOerror err = errorReading(
-        "analysis static;\n\ncontact { method augmentedLagrangian; }");
+        "analysis static;\n\ncontact { method augmentedLagrange; }");
     EXPECT_EQ(err.where().line, 3);
     EXPECT_EQ(err.keyword(), "method");
     EXPECT_THAT(err.message(), HasSubstr("penalty"));
+    EXPECT_THAT(err.message(), HasSubstr("augmentedLagrangian"));
     const IOerror value = errorReading(
         "analysis static;\ncontact { normalPenalty -1; }");
     EXPECT_EQ(value.keyword(), "normalPenalty");

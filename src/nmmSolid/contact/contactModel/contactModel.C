@@ -271,6 +271,7 @@ void contactModel::carryHistory(const std::vector<contactRecord>& history, bool 
             r.shearForce = old->shearForce;
             r.slip = old->slip;
             r.normalForce = old->normalForce;
+            r.multiplier = multipliers_ && isClosed(old->state) ? old->multiplier : 0.0;
         }
         else
         {
@@ -325,7 +326,7 @@ void contactModel::capStuckShearForce(active& a) const
     contactQuery q;
     q.state = r.state;
     q.gap = a.gap0;
-    q.Fn = -a.kN*a.gap0;
+    q.Fn = r.multiplier - a.kN*a.gap0;
     q.Fs = a.shearForce0;
     q.length = r.length*thickness_;
     const contactDecision d = a.law->decide(q);
@@ -418,7 +419,7 @@ Eigen::VectorXd contactModel::forces(long nUnknowns) const
     {
         const contactState s = a.record.state;
         double normal = 0, shear = 0;
-        if (isClosed(s)) normal = -a.kN*a.gap0;
+        if (isClosed(s)) normal = a.record.multiplier - a.kN*a.gap0;
         if (s == contactState::bonded) shear = a.shearForce0;
         if (s == contactState::sliding) shear = a.friction;
         for (const auto& [dof, c] : a.g) f[dof] += normal*c;
@@ -452,7 +453,21 @@ double contactModel::stepLength
     // and non-decreasing: a spring without a bond pulls nothing, so its
     // term has a kink where its gap passes zero. Shear terms are those of
     // the assumed states (friction has no potential)
-    struct line { double gap, rate, kN; bool oneSided; };
+    // A spring's force is lambda - kN gap (lambda the augmented
+    // Lagrangian's multiplier, 0 with plain penalties), its potential
+    // kN/2 gap^2 - lambda gap; without a bond it pulls nothing, beyond
+    // gap = lambda/kN
+    struct line
+    {
+        double gap, rate, kN, lambda;
+        bool oneSided;
+        double kink() const { return lambda/kN; }
+        double potential(double g) const
+        {
+            if (oneSided) g = std::min(g, kink());
+            return 0.5*kN*g*g - lambda*g;
+        }
+    };
     std::vector<line> springs;
     springs.reserve(active_.size());
     double a = curvature, b = slope;
@@ -472,7 +487,8 @@ double contactModel::stepLength
             frictionLoads = frictionLoads || c.friction != 0;
         }
         const bool bond = c.record.bondIntact && isClosed(s);
-        springs.push_back({c.gap0 + along(c.g, dd), along(c.g, delta), c.kN, !bond});
+        const double lambda = isClosed(s) ? c.record.multiplier : 0.0;
+        springs.push_back({c.gap0 + along(c.g, dd), along(c.g, delta), c.kN, lambda, !bond});
     }
     const auto derivative = [&](double alpha)
     {
@@ -480,7 +496,7 @@ double contactModel::stepLength
         for (const line& l : springs)
         {
             const double gap = l.gap + alpha*l.rate;
-            if (!l.oneSided || gap < 0) d += l.kN*gap*l.rate;
+            if (!l.oneSided || gap < l.kink()) d += (l.kN*gap - l.lambda)*l.rate;
         }
         return d;
     };
@@ -488,12 +504,7 @@ double contactModel::stepLength
     const auto fall = [&]
     {
         double f = 0.5*a + b;
-        for (const line& l : springs)
-        {
-            const double g0 = l.oneSided ? std::min(l.gap, 0.0) : l.gap;
-            const double g1 = l.oneSided ? std::min(l.gap + l.rate, 0.0) : l.gap + l.rate;
-            f += 0.5*l.kN*(g1*g1 - g0*g0);
-        }
+        for (const line& l : springs) f += l.potential(l.gap + l.rate) - l.potential(l.gap);
         return f;
     };
 
@@ -514,7 +525,7 @@ double contactModel::stepLength
     std::vector<double> kinks{0.0, 1.0};
     for (const line& l : springs)
     {
-        const double at = l.rate != 0 ? -l.gap/l.rate : -1;
+        const double at = l.rate != 0 ? (l.kink() - l.gap)/l.rate : -1;
         if (l.oneSided && at > 0 && at < 1) kinks.push_back(at);
     }
     std::sort(kinks.begin(), kinks.end());
@@ -548,7 +559,7 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
         q.gap = r.gap;
         // An open contact gets the trial forces of closing over the whole
         // step, so that one that closes while slipping starts sliding
-        q.Fn = -a.kN*r.gap;
+        q.Fn = r.multiplier - a.kN*r.gap;
         q.Fs = a.shearForce0 - a.kS*a.ds;
         q.length = r.length*thickness_;
         // A coupled fluid's pressure is a load on the faces (pressureLoads),
@@ -622,6 +633,9 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
         }
         r.state = d.state;
         r.bondIntact = d.bondIntact;
+        // An open contact carries no force: its multiplier starts again
+        // from 0 when it closes
+        if (!isClosed(r.state)) r.multiplier = 0;
         a.friction = friction;
         ++counts.states[contactStateNumber(r.state)];
     }
@@ -632,6 +646,20 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
 bool contactModel::iterationCounts::frictionSettled() const
 {
     return frictionChange <= frictionTolerance*frictionLoad;
+}
+
+
+void contactModel::augment()
+{
+    for (active& a : active_)
+    {
+        contactRecord& r = a.record;
+        if (!isClosed(r.state)) continue;
+        // Uzawa: the multiplier takes the whole force of the last solve,
+        // which the spring then need not carry by penetrating
+        r.multiplier -= a.kN*r.gap;
+        if (!r.bondIntact) r.multiplier = std::max(r.multiplier, 0.0);
+    }
 }
 
 

@@ -221,7 +221,7 @@ void nmmSolidModel::factoriseSystem(const Eigen::SparseMatrix<double>& K, double
         );
     }
     timing_["factorisation"] += clock.elapsed();
-    checkConditioning(dt);
+    checkConditioning(parts_.solver->pivotRatio(), dt);
 }
 
 
@@ -267,13 +267,23 @@ bool nmmSolidModel::solveWithContacts
         timing_["solution"] += clock.elapsed();
         return X;
     };
+    services.factorWork = [this]
+    {
+        return std::make_pair
+        (
+            parts_.solver->factorisationWork(), parts_.solver->solveWork()
+        );
+    };
+    services.conditioning = [this, dt](double bound) { checkConditioning(bound, dt); };
     services.timing = &timing_;
     services.log = log_;
-    return parts_.contactMethod->solve
+    const bool solved = parts_.contactMethod->solve
     (
         sys, space_->patchDisplacements(state_.D), state_.contacts,
         state_.timeIndex == 0, services, report, dd
     );
+    factorUpdates_ += report.factorUpdates;
+    return solved;
 }
 
 
@@ -293,15 +303,14 @@ void nmmSolidModel::reportCut(const nmmAssembler::system& sys, stepReport& repor
 }
 
 
-void nmmSolidModel::checkConditioning(double dt)
+void nmmSolidModel::checkConditioning(double ratio, double dt)
 {
     constexpr double limit = 1e12;
-    const double ratio = parts_.solver->pivotRatio();
     largestPivotRatio_ = std::max(largestPivotRatio_, ratio);
     if (conditioningReported_ || !(ratio > limit) || !log_) return;
     conditioningReported_ = true;
     *log_ << "    warning: badly conditioned system in the step to time "
-        << state_.time + dt << ": largest/smallest pivot " << ratio
+        << state_.time + dt << ": condition number at least " << ratio
         << " > " << limit << ", about "
         << std::max(0, int(std::floor(-std::log10(ratio*1e-16))))
         << " significant digits left";
@@ -490,6 +499,9 @@ void nmmSolidModel::printTiming(std::ostream& os) const
         os << "  " << part << ' ' << std::setprecision(3) << seconds;
     }
     os << '\n';
+    os << "Linear algebra: " << parts_.solver->nFactorisations() << " factorisations ("
+        << parts_.solver->nAnalyses() << " with a new pattern), "
+        << factorUpdates_ << " solves with an updated factor\n";
 }
 
 } // End namespace nmm

@@ -313,9 +313,36 @@ void writeContacts(hdf5File& out, const std::vector<contactRecord>& contacts)
     }
     out.write("contacts/ids", ids);
     out.write("contacts/values", values);
-    std::vector<double> hidden;
-    for (const auto& r : contacts) hidden.push_back(r.hiddenOverlap);
+    std::vector<double> hidden, multiplier;
+    for (const auto& r : contacts)
+    {
+        hidden.push_back(r.hiddenOverlap);
+        multiplier.push_back(r.multiplier);
+    }
     out.write("contacts/hiddenOverlap", hidden);
+    out.write("contacts/multiplier", multiplier);
+}
+
+
+//- A column of the contacts added after the first states were written:
+//  zeros where it is absent
+std::vector<double> optionalContactColumn
+(
+    const hdf5File& in,
+    const std::filesystem::path& file,
+    const std::string& name,
+    std::size_t rows
+)
+{
+    if (!in.exists(name)) return std::vector<double>(rows, 0.0);
+    std::vector<double> column = in.read<double>(name);
+    if (column.size() != rows)
+    {
+        throw fatalError(file.string() + ": " + name + " has "
+            + std::to_string(column.size()) + " rows for "
+            + std::to_string(rows) + " contacts");
+    }
+    return column;
 }
 
 
@@ -332,18 +359,8 @@ std::vector<contactRecord> readContacts
     const auto values = in.read2D<double>("contacts/values", contactValueColumns);
     const std::size_t nLoops =
         model.contacts() ? model.contacts()->boundaries().loops().size() : 0;
-    // Absent from states written before it was kept: nothing hidden
-    std::vector<double> hidden(ids.rows, 0.0);
-    if (in.exists("contacts/hiddenOverlap"))
-    {
-        hidden = in.read<double>("contacts/hiddenOverlap");
-        if (hidden.size() != ids.rows)
-        {
-            throw fatalError(file.string() + ": contacts/hiddenOverlap has "
-                + std::to_string(hidden.size()) + " rows for "
-                + std::to_string(ids.rows) + " contacts");
-        }
-    }
+    const auto hidden = optionalContactColumn(in, file, "contacts/hiddenOverlap", ids.rows);
+    const auto multiplier = optionalContactColumn(in, file, "contacts/multiplier", ids.rows);
     for (std::size_t i = 0; i < ids.rows; ++i)
     {
         contactRecord r;
@@ -368,6 +385,7 @@ std::vector<contactRecord> readContacts
         r.point = {values(i, 6), values(i, 7)};
         r.normal = {values(i, 8), values(i, 9)};
         r.hiddenOverlap = hidden[i];
+        r.multiplier = multiplier[i];
         result.push_back(r);
     }
     return result;

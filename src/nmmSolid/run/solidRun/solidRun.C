@@ -178,7 +178,8 @@ void solidRun::end() const
     // A lower bound of the condition number: 1e16 over it is roughly the
     // relative accuracy left to the solution
     log_ << "Largest pivot ratio (largest/smallest pivot of a"
-        " factorisation): " << model_->largestPivotRatio() << '\n';
+        " factorisation, or the bound of a solve with an updated one): "
+        << model_->largestPivotRatio() << '\n';
     model_->printTiming(log_);
 }
 

@@ -94,6 +94,40 @@ Eigen::VectorXd lowRankUpdate::residual
 }
 
 
+void lowRankUpdate::boundCondition
+(
+    const std::vector<std::size_t>& c,
+    const std::vector<double>& k,
+    const Eigen::MatrixXd& S,
+    const Eigen::FullPivLU<Eigen::MatrixXd>& lu
+)
+{
+    // For any v, v^T K^-1 v/|v|^2 <= 1/lambda_min and lambda_max >= the
+    // largest diagonal, so their product bounds the condition from below.
+    // With v a changed term's u, K^-1 u comes from the same identity:
+    // u_a^T K^-1 u_a = M_aa - (M S^-1 M)_aa, M = U^T Z = S - D^-1
+    const long m = long(c.size());
+    Eigen::VectorXd diagonal = K1_->diagonal();
+    Eigen::MatrixXd M = S;
+    for (long a = 0; a < m; ++a)
+    {
+        const double dk = k[c[a]] - terms_[c[a]].k;
+        M(a, a) -= 1/dk;
+        for (const auto& [dof, coeff] : *terms_[c[a]].u) diagonal[dof] += dk*coeff*coeff;
+    }
+    const Eigen::MatrixXd SinvM = lu.solve(M);
+    double compliance = 0;
+    for (long a = 0; a < m; ++a)
+    {
+        double uu = 0;
+        for (const auto& [dof, coeff] : *terms_[c[a]].u) uu += coeff*coeff;
+        const double q = M(a, a) - M.row(a).dot(SinvM.col(a));
+        if (uu > 0) compliance = std::max(compliance, q/uu);
+    }
+    conditionBound_ = diagonal.maxCoeff()*compliance;
+}
+
+
 bool lowRankUpdate::solve
 (
     const std::vector<double>& k,
@@ -105,6 +139,7 @@ bool lowRankUpdate::solve
     const std::vector<std::size_t> c = changed(k);
     x = solveK1(f);
     residual_ = 0;
+    conditionBound_ = 0;
     if (c.empty()) return x.allFinite();
 
     addColumns(c, solveK1);
@@ -123,6 +158,7 @@ bool lowRankUpdate::solve
         S(a, a) += 1/(k[c[a]] - terms_[c[a]].k);
     }
     const Eigen::FullPivLU<Eigen::MatrixXd> lu(S);
+    boundCondition(c, k, S, lu);
     // y = K1^-1 b corrected for the changed terms
     const auto correct = [&](Eigen::VectorXd& y)
     {

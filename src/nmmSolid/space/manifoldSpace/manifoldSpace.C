@@ -24,6 +24,8 @@ manifoldSpace::manifoldSpace
 std::vector<manifoldSpace::dofTerm> manifoldSpace::dofTerms(label e) const
 {
     std::vector<dofTerm> terms;
+    // Two per corner of an element whose patches are not extended
+    terms.reserve(6);
     for (int k = 0; k < 3; ++k)
     {
         const label p = pc_.elements()[e].patches[k];

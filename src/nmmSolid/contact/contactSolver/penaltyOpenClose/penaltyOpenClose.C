@@ -26,8 +26,19 @@ constexpr double searchOverStep = 2.5;
 constexpr double penetrationOverSearch = 0.4;
 
 
-//- "auto" (nullopt) or a number > 0; absent is auto
-std::optional<double> autoOrPositive(const dictionary& d, const std::string& key)
+void addTime(const contactSolver::services& s, const char* part, const cpuTime& clock)
+{
+    if (s.timing) (*s.timing)[part] += clock.elapsed();
+}
+
+} // End anonymous namespace
+
+
+std::optional<double> penaltyOpenClose::autoOrPositive
+(
+    const dictionary& d,
+    const std::string& key
+)
 {
     const entry* e = d.findEntry(key);
     if (!e) return std::nullopt;
@@ -36,14 +47,6 @@ std::optional<double> autoOrPositive(const dictionary& d, const std::string& key
     if (s.size() == 1 && s[0].isNumber() && s[0].scalar > 0) return s[0].scalar;
     throw e->error("'" + key + "' is auto or a number > 0");
 }
-
-
-void addTime(const contactSolver::services& s, const char* part, const cpuTime& clock)
-{
-    if (s.timing) (*s.timing)[part] += clock.elapsed();
-}
-
-} // End anonymous namespace
 
 
 const keywordTable& penaltyOpenClose::keywords()
@@ -70,8 +73,13 @@ const keywordTable& penaltyOpenClose::keywords()
 
 
 penaltyOpenClose::penaltyOpenClose(const dictionary& d)
+:
+    penaltyOpenClose(d, keywords())
+{}
+
+
+penaltyOpenClose::penaltyOpenClose(const dictionary& d, const keywordTable& k)
 {
-    const keywordTable& k = keywords();
     k.validate(d);
     given_.normalPenalty = autoOrPositive(d, "normalPenalty");
     given_.shearPenalty = autoOrPositive(d, "shearPenalty");
@@ -115,27 +123,52 @@ bool penaltyOpenClose::solve
     Eigen::VectorXd& dd
 )
 {
-    const long n = long(sys.f.size());
+    beginStep(sys, patchD0, history, atStart, srv);
+    dd = Eigen::VectorXd::Zero(sys.f.size());
+    const bool settled = openClose(sys, srv, report, dd);
+    return endStep(settled, report, dd);
+}
+
+
+void penaltyOpenClose::beginStep
+(
+    const nmmAssembler::system& sys,
+    const Eigen::Matrix2Xd& patchD0,
+    const std::vector<contactRecord>& history,
+    bool atStart,
+    const services& srv
+)
+{
     cpuTime clock;
     contacts_->beginStep(patchD0, history, atStart);
     addTime(srv, "contact detection", clock);
-    const Eigen::VectorXd loads = sys.f + contacts_->pressureLoads(n);
+    loads_ = sys.f + contacts_->pressureLoads(sys.f.size());
     clock = cpuTime();
     pattern_ = contacts_->withPattern(sys.K);
     addTime(srv, "contact assembly", clock);
+    factorised_ = false;
+}
 
+
+bool penaltyOpenClose::openClose
+(
+    const nmmAssembler::system& sys,
+    const services& srv,
+    stepReport& report,
+    Eigen::VectorXd& dd
+)
+{
+    const long n = long(sys.f.size());
     bool settled = false;
     // Contacts that open and close in turn make the iteration damped from
     // then on: each solve's increment is taken only as far as it lowers
     // the step's potential, which cannot cycle
     bool damped = false;
-    factorised_ = false;
-    dd = Eigen::VectorXd::Zero(n);
     for (int it = 1; it <= given_.maxOpenCloseIterations && !settled; ++it)
     {
-        clock = cpuTime();
+        cpuTime clock;
         const std::vector<double> k = contacts_->springStiffnesses();
-        const Eigen::VectorXd f = loads + contacts_->forces(n);
+        const Eigen::VectorXd f = loads_ + contacts_->forces(n);
         addTime(srv, "contact assembly", clock);
 
         const Eigen::VectorXd delta = solveWithStates(k, f, dd, srv, report);
@@ -147,20 +180,25 @@ bool penaltyOpenClose::solve
             const Eigen::VectorXd Kdelta = sys.K*delta;
             alpha = contacts_->stepLength
             (
-                dd, delta, delta.dot(Kdelta), Kdelta.dot(dd) - delta.dot(loads)
+                dd, delta, delta.dot(Kdelta), Kdelta.dot(dd) - delta.dot(loads_)
             );
         }
         dd += alpha*delta;
         const auto counts = contacts_->update(dd);
         damped = damped || counts.chattering > 0;
         addTime(srv, "contact update", clock);
-        report.iterations = it;
+        ++report.iterations;
         report.contacts = counts.states;
         report.bondsBroken += counts.bondsBroken;
-        logIteration(srv.log, it, counts, alpha);
+        logIteration(srv.log, report.iterations, counts, alpha);
         settled = alpha == 1 && counts.changes == 0 && counts.frictionSettled();
     }
+    return settled;
+}
 
+
+bool penaltyOpenClose::endStep(bool settled, stepReport& report, const Eigen::VectorXd& dd)
+{
     report.maxPenetration = contacts_->maxPenetration();
     report.overlapsAtStart = contacts_->overlapsAtStart();
     const auto patchDD = space_->patchDisplacements(dd);
@@ -191,6 +229,7 @@ Eigen::VectorXd penaltyOpenClose::solveWithStates
         addTime(srv, "factor update", clock);
         if (ok)
         {
+            if (srv.conditioning) srv.conditioning(update_.conditionBound());
             ++report.factorUpdates;
             lastSolve_ = "factor updated, rank " + std::to_string(update_.rank(k).first);
             return x;
@@ -201,19 +240,19 @@ Eigen::VectorXd penaltyOpenClose::solveWithStates
     }
     refactorise(k, srv);
     ++report.factorisations;
-    const cpuTime clock;
-    Eigen::VectorXd x = srv.solve(f - K1_.selfadjointView<Eigen::Lower>()*dd);
-    solveTime_ = clock.elapsed();
-    return x;
+    return srv.solve(f - K1_.selfadjointView<Eigen::Lower>()*dd);
 }
 
 
 bool penaltyOpenClose::updateIsCheaper(const std::vector<double>& k) const
 {
-    // One solve per new column, and S's LU (about m^3 flops at ~1 Gflop/s)
+    // One solve per new column (a block solve costs less, which the
+    // rule leaves as margin), and S's LU, about m^3, against a
+    // factorisation: counted in work, not time, so that a run repeats
     const auto [m, fresh] = update_.rank(k);
-    const double dense = 1e-9*double(m)*double(m)*double(m);
-    return m <= maxUpdateRank && double(fresh)*solveTime_ + dense < factorTime_;
+    const double dense = double(m)*double(m)*double(m);
+    return m <= maxUpdateRank
+        && double(fresh)*work_.second + dense < work_.first;
 }
 
 
@@ -223,9 +262,8 @@ void penaltyOpenClose::refactorise(const std::vector<double>& k, const services&
     K1_ = pattern_;
     contacts_->addSprings(K1_);
     addTime(srv, "contact assembly", clock);
-    clock = cpuTime();
     srv.factorise(K1_);
-    factorTime_ = clock.elapsed();
+    work_ = srv.factorWork ? srv.factorWork() : std::pair<double, double>{};
     std::vector<lowRankUpdate::term> terms(k.size());
     for (std::size_t j = 0; j < k.size(); ++j) terms[j] = {&contacts_->springTerms(j), k[j]};
     update_.reset(K1_, std::move(terms));

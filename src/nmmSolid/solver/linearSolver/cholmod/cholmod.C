@@ -144,6 +144,27 @@ std::string cholmod::ordering() const
 }
 
 
+double cholmod::factorisationWork() const
+{
+    // Column j of supernode s has the rows of s from j down
+    const cholmod_factor* L = impl_->llt.factor();
+    if (!L || !L->is_super) return 0;
+    const auto* super = static_cast<const int*>(L->super);
+    const auto* pi = static_cast<const int*>(L->pi);
+    double work = 0;
+    for (size_t s = 0; s < L->nsuper; ++s)
+    {
+        const long nsrow = pi[s + 1] - pi[s];
+        for (long j = 0; j < super[s + 1] - super[s]; ++j)
+        {
+            const double c = double(nsrow - j);
+            work += c*c;
+        }
+    }
+    return work;
+}
+
+
 long cholmod::factorNonZeros() const
 {
     // lnz of the selected ordering: the true nonzeros, where the

@@ -62,4 +62,17 @@ long simplicialLDLT::factorNonZeros() const
     return L.nonZeros() + L.rows();
 }
 
+
+double simplicialLDLT::factorisationWork() const
+{
+    const auto& L = impl_->ldlt.matrixL().nestedExpression();
+    double work = 0;
+    for (long j = 0; j < L.outerSize(); ++j)
+    {
+        const double c = double(L.outerIndexPtr()[j + 1] - L.outerIndexPtr()[j] + 1);
+        work += c*c;
+    }
+    return work;
+}
+
 } // End namespace nmm
