@@ -274,6 +274,12 @@ def check_functions(np, plot, pts, cells, blocks, outer, centre):
                   "width %g, colour %s" % (category, pair, w,
                                            colours[category]))
         plt.close(fig)
+    fig, ax = plt.subplots()
+    tiny = plot.draw_chains(ax, segments[:1], np.array([1e-3]), ["bonded"],
+                            False)
+    check(np.allclose(tiny["bonded"].get_linewidths(), [plot.MIN_WIDTH]),
+          "draw_chains: a weak closed pair at the minimum width")
+    plt.close(fig)
 
 
 def check_walls(np, plot):
