@@ -198,7 +198,8 @@ def contactsFile(vtu):
 def readContacts(path):
     """A contact frame: x (contact points), and the point data arrays
     (contactState, bondIntact, normalForce, shearForce, penetration, slip,
-    normal, force) as numpy arrays; no points gives empty arrays."""
+    length, normal, force, blockA, blockB; files of older runs lack the
+    last two) as numpy arrays; no points gives empty arrays."""
     import numpy as np
     poly = readPolyData(path)
     c = frame()

@@ -413,7 +413,7 @@ TEST(vtkXmlFile, vtpVertsOnePerPoint)
         rawBytes(std::vector<std::int64_t>{0, 1, 2, 3}));
     EXPECT_EQ(binaryPayload(xml, "offsets"),
         rawBytes(std::vector<std::int64_t>{1, 2, 3, 4}));
-    EXPECT_EQ(binaryPayload(xml, "state"), rawBytes(std::vector<std::int32_t>{0, 1, 2, 0}));
+    EXPECT_EQ(binaryPayload(xml, "contactState"), rawBytes(std::vector<std::int32_t>{0, 1, 2, 0}));
 
     // No contacts yet: still a valid, empty frame
     std::ostringstream empty;

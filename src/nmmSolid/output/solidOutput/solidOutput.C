@@ -480,7 +480,7 @@ vtkPointSet solidOutput::contactFrame(const nmmSolidModel& model)
     if (!cm) return set;
     const auto patchD = model.patchDisplacements();
     const auto& loops = cm->boundaries().loops();
-    std::vector<std::int32_t> state, bond;
+    std::vector<std::int32_t> state, bond, blockA, blockB;
     std::vector<double> fn, fs, penetration, slip, length;
     std::vector<Eigen::Vector2d> normal, traction;
     for (const contactRecord& r : model.state().contacts)
@@ -491,6 +491,8 @@ vtkPointSet solidOutput::contactFrame(const nmmSolidModel& model)
         ));
         state.push_back(contactStateNumber(r.state));
         bond.push_back(r.bondIntact);
+        blockA.push_back(loops[r.vertexLoop].block);
+        blockB.push_back(loops[r.edgeLoop].block);
         fn.push_back(r.normalForce);
         fs.push_back(r.shearForce);
         penetration.push_back(-r.gap);
@@ -500,15 +502,18 @@ vtkPointSet solidOutput::contactFrame(const nmmSolidModel& model)
         const Eigen::Vector2d s(-r.normal.y(), r.normal.x());
         traction.push_back(r.normalForce*r.normal + r.shearForce*s);
     }
-    set.addPointData(vtkDataArray::int32("contactState", std::move(state)));
-    set.addPointData(vtkDataArray::int32("bondIntact", std::move(bond)));
-    set.addPointData(vtkDataArray::scalar("normalForce", std::move(fn)));
-    set.addPointData(vtkDataArray::scalar("shearForce", std::move(fs)));
-    set.addPointData(vtkDataArray::scalar("penetration", std::move(penetration)));
-    set.addPointData(vtkDataArray::scalar("slip", std::move(slip)));
-    set.addPointData(vtkDataArray::scalar("length", std::move(length)));
-    set.addPointData(vtkDataArray::vector("normal", normal));
-    set.addPointData(vtkDataArray::vector("force", traction));
+    namespace f = vtkFieldNames;
+    set.addPointData(vtkDataArray::int32(f::contactState, std::move(state)));
+    set.addPointData(vtkDataArray::int32(f::bondIntact, std::move(bond)));
+    set.addPointData(vtkDataArray::scalar(f::normalForce, std::move(fn)));
+    set.addPointData(vtkDataArray::scalar(f::shearForce, std::move(fs)));
+    set.addPointData(vtkDataArray::scalar(f::penetration, std::move(penetration)));
+    set.addPointData(vtkDataArray::scalar(f::slip, std::move(slip)));
+    set.addPointData(vtkDataArray::scalar(f::contactLength, std::move(length)));
+    set.addPointData(vtkDataArray::vector(f::contactNormal, normal));
+    set.addPointData(vtkDataArray::vector(f::contactForce, traction));
+    set.addPointData(vtkDataArray::int32(f::blockA, std::move(blockA)));
+    set.addPointData(vtkDataArray::int32(f::blockB, std::move(blockB)));
     return set;
 }
 
