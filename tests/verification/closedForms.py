@@ -447,10 +447,11 @@ class stickSlip(cp.stickSlip):
             t = t1 + 1e-9
 
     @classmethod
-    def position(cls, t):
-        """x(t): the plateau of the last slip before t, or within a slip."""
+    def position(cls, t, windows=None):
+        """x(t): the plateau of the last slip before t, or within a slip
+        (windows: those of windows(), to reuse them)."""
         x = 0.0
-        for t0, t1, s, x0 in cls.windows():
+        for t0, t1, s, x0 in (windows or cls.windows()):
             if t < t0:
                 return x
             if t <= t1:

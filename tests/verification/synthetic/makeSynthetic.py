@@ -487,7 +487,7 @@ def stickSlip(out, tamper):
                 " iterations cuts"]
     for i in range(n + 1):
         t = i*dt
-        x = c.position(t)*(1.025 if tamper and t > windows[1][0] else 1.0)
+        x = c.position(t, windows)*(1.025 if tamper and t > windows[1][0] else 1.0)
         motion.append("%.12g %.12g 0.5 0 0 0" % (t, 0.5 + x))
         if i == 0:
             continue
