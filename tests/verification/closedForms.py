@@ -363,6 +363,123 @@ class pushedBlock(cp.pushedBlock):
 
 
 # --------------------------------------------------------------------------
+# Stick-slip under a harmonic load (Potra's benchmark): a rigid block of
+# mass m, m x'' = F0 cos(omega t) - mu m g sgn(x') while it slides; it
+# sticks while |F| <= mu m g. Piecewise in closed form: a slip from rest at
+# t0 in the direction s of F(t0) has
+#     v(t) = F0/omega (sin omega t - sin omega t0)/m - s mu g (t - t0)
+# and ends at the first root of v after t0; the stick after it ends when
+# |F| next exceeds mu m g.
+# --------------------------------------------------------------------------
+class stickSlip(cp.stickSlip):
+
+    @classmethod
+    def force(cls, t):
+        return cls.F0*math.cos(cls.omega*t)
+
+    @classmethod
+    def friction(cls):
+        return cls.mu*cls.m*cls.g
+
+    @classmethod
+    def slipVelocity(cls, t0, s, t):
+        w = cls.omega
+        return (cls.F0/w*(math.sin(w*t) - math.sin(w*t0))/cls.m
+                - s*cls.mu*cls.g*(t - t0))
+
+    @classmethod
+    def slipDisplacement(cls, t0, s, t):
+        """x(t) - x(t0) of a slip from rest at t0 in the direction s."""
+        w, dt = cls.omega, t - t0
+        return (cls.F0/w*((math.cos(w*t0) - math.cos(w*t))/w - math.sin(w*t0)*dt)/cls.m
+                - s*cls.mu*cls.g*dt*dt/2)
+
+    @staticmethod
+    def _root(f, a, b):
+        """The root of f between a and b (f(a) f(b) <= 0), by bisection to
+        rounding."""
+        fa = f(a)
+        for _ in range(200):
+            c = 0.5*(a + b)
+            fc = f(c)
+            if fa*fc <= 0:
+                b = c
+            else:
+                a, fa = c, fc
+            if b - a < 1e-14*max(1.0, abs(b)):
+                break
+        return 0.5*(a + b)
+
+    @classmethod
+    def _nextSlipStart(cls, t):
+        """The first time >= t at which |F| exceeds the friction."""
+        limit, h = cls.friction(), 1e-3
+        over = lambda u: abs(cls.force(u)) - limit  # noqa: E731
+        if over(t) > 0:
+            return t
+        while t < cls.endTime and over(t + h) <= 0:
+            t += h
+        if t >= cls.endTime:
+            return None
+        return cls._root(over, t, t + h)
+
+    @classmethod
+    def windows(cls):
+        """[(start, end, direction, x at start)] of the slips up to
+        endTime; x is 0 at t = 0."""
+        result, t, x, h = [], 0.0, 0.0, 1e-3
+        while True:
+            t0 = cls._nextSlipStart(t)
+            if t0 is None:
+                return result
+            s = 1.0 if cls.force(t0) > 0 else -1.0
+            v = lambda u: cls.slipVelocity(t0, s, u)  # noqa: E731
+            # The velocity leaves zero in the direction s; the slip ends
+            # where it returns (the first sign change)
+            u = t0 + h
+            while u < cls.endTime and s*v(u) > 0:
+                u += h
+            t1 = cls._root(v, u - h, u) if u < cls.endTime else cls.endTime
+            result.append((t0, t1, s, x))
+            x += cls.slipDisplacement(t0, s, t1)
+            if t1 >= cls.endTime:
+                return result
+            t = t1 + 1e-9
+
+    @classmethod
+    def position(cls, t, windows=None):
+        """x(t): the plateau of the last slip before t, or within a slip
+        (windows: those of windows(), to reuse them)."""
+        x = 0.0
+        for t0, t1, s, x0 in (windows or cls.windows()):
+            if t < t0:
+                return x
+            if t <= t1:
+                return x0 + cls.slipDisplacement(t0, s, t)
+            x = x0 + cls.slipDisplacement(t0, s, t1)
+        return x
+
+    @classmethod
+    def plateaus(cls):
+        """[(from, to, x)]: the position held between two slips (to the
+        end time after the last)."""
+        w = cls.windows()
+        result = []
+        for i, (t0, t1, s, x0) in enumerate(w):
+            end = w[i + 1][0] if i + 1 < len(w) else cls.endTime
+            if t1 < end:
+                result.append((t1, end, x0 + cls.slipDisplacement(t0, s, t1)))
+        return result
+
+
+if __name__ == "__main__" and sys.argv[1:] == ["stickSlip"]:
+    for t0, t1, s, x0 in stickSlip.windows():
+        print("slip %+d: %.6f .. %.6f s, from x = %.6e m" % (s, t0, t1, x0))
+    for a, b, x in stickSlip.plateaus():
+        print("plateau %.6f .. %.6f s: x = %.6e m" % (a, b, x))
+
+
+# --------------------------------------------------------------------------
 # Contact cases loaded in steps (tutorials/verification/contact/): plane
 # strain throughout.
 # --------------------------------------------------------------------------

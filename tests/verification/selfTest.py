@@ -167,6 +167,17 @@ def closedForms():
     pb = cf.pushedBlock
     expect(abs(pb.onsetForce() - 0.67735) < 1e-5,
            "pushedBlock: onset at c L + W tan phi = 0.6774 (%.6g)" % pb.onsetForce())
+    ss = cf.stickSlip
+    windows = [(round(a, 4), round(b, 4)) for a, b, _, _ in ss.windows()[:3]]
+    expect(windows == [(0.0, 0.3386), (2.9463, 3.5328), (6.0879, 6.6744)],
+           "stickSlip: slip windows [0, 0.3386], [2.9463, 3.5328], [6.0879, 6.6744] (%s)"
+           % windows)
+    numeric = stickSlipIntegrated()
+    expect(len(numeric) == len(ss.windows()) and all(
+        abs(a - n[0]) < 2e-5 and abs(b - n[1]) < 2e-5 and abs(x - n[2]) < 1e-8
+        for (a, b, _, _), (_, _, x), n in zip(ss.windows(), ss.plateaus(), numeric)),
+        "stickSlip: the windows and plateaus of a direct integration (%s)"
+        % [tuple(round(v, 5) for v in n) for n in numeric])
 
 
 def toppleRK4(tEnd, n=3000):
@@ -190,6 +201,41 @@ def toppleRK4(tEnd, n=3000):
         k4 = f(y + dt*k3)
         y = y + dt/6*(k1 + 2*k2 + 2*k3 + k4)
     return float(y[0])
+
+
+def stickSlipIntegrated(dt=1e-5):
+    """[(start, end, plateau x)] of the stick-slip block by a direct
+    integration of m x'' = F(t) - mu m g sgn(x') with sticking while
+    |F| <= mu m g (midpoint rule, the switches located within a step),
+    independent of closedForms.stickSlip's piecewise solution."""
+    ss = cf.stickSlip
+    limit = ss.mu*ss.m*ss.g
+    t, x, v, s = 0.0, 0.0, 0.0, 0.0
+    result = []
+    start = None
+    n = int(round(ss.endTime/dt))
+    for i in range(n):
+        t = i*dt
+        if s == 0:
+            if abs(ss.force(t)) > limit:
+                # |F| crosses the friction within the step: start there
+                f = lambda u: abs(ss.force(u)) - limit  # noqa: E731
+                start = ss._root(f, t - dt, t) if i else 0.0
+                s = 1.0 if ss.force(t) > 0 else -1.0
+            else:
+                continue
+        a = (ss.force(t + dt/2) - s*limit)/ss.m
+        v1 = v + a*dt
+        if s*v1 < 0:
+            # Stops within the step: the fraction where v reaches 0
+            h = -v/a
+            x += v*h + a*h*h/2
+            result.append((start, t + h, x))
+            v, s = 0.0, 0.0
+            continue
+        x += (v + v1)/2*dt
+        v = v1
+    return result
 
 
 # --------------------------------------------------------------------------
@@ -274,7 +320,8 @@ CHECKERS = {"cantilever": ("checkCantilever.py", []),
             "toppleSlip": ("checkTopple.py", ["toppling"]),
             "bouncingBlock": ("checkBouncingBlock.py", ["trapezoidal"]),
             "bouncingBlockDDA": ("checkBouncingBlock.py", ["DDA"]),
-            "pushedBlock": ("checkPushedBlock.py", [])}
+            "pushedBlock": ("checkPushedBlock.py", []),
+            "stickSlip": ("checkStickSlip.py", [])}
 
 
 def checker(case, workDir, generator="makeSynthetic.py", checkers=CHECKERS):

@@ -132,6 +132,20 @@ class pushedBlock:
     deltaT = 0.01
 
 
+class stickSlip:
+    """Block of mass m (L x L, density m/L^2) on a fixed base, dry friction
+    mu, pushed by F(t) = F0 cos(omega t) to endTime (Potra's benchmark)."""
+    L = 1.0
+    m = 1.0
+    g = 9.81
+    mu = 0.8
+    F0 = 8.0
+    omega = 1.0
+    endTime = 10.0
+    deltaT = 6.25e-4
+    E = 1e9
+
+
 class hertz:
     """Cylinder of radius R (E1, nu1) on a flat (E2, nu2), P per unit
     thickness; fine, fineLength, coarse: the chords of the boundaries."""

@@ -8,7 +8,7 @@ Writes system/, constant/ and 0/ of cantilever, plateHole, plateHoleFoam,
 lame, freeFall, waveBar and sneddon/angle{0,30,45}; and the whole of the
 contact cases (docs/verification.md, Contact) under contact/:
 incline/phi{0,10,20,29,31}, topple/{stable,sliding,toppling},
-pushedBlock, bouncingBlock/{trapezoidal,DDA} (their Allrun, Allclean and
+pushedBlock, stickSlip, bouncingBlock/{trapezoidal,DDA} (their Allrun, Allclean and
 README.md too). The files it writes
 are committed, so running it is only needed after changing a parameter
 here or in caseParameters.py (the physical parameters, which
@@ -561,7 +561,8 @@ default
 """ % (fmt(frictionAngle), fmt(cohesion), fmt(tensileStrength), initialState))
 
 
-def contactSolution(case, scheme, contact="", stepControl="", comment=""):
+def contactSolution(case, scheme, contact="", stepControl="", comment="",
+                    extra=""):
     write(case, "system/nmmSolution", "system", "nmmSolution", comment + """\
 analysis        dynamic;
 
@@ -577,7 +578,7 @@ stepControl
 %s}
 
 linearSolver    { type cholmod; }
-""" % (scheme, contact, stepControl))
+""" % (scheme, contact, stepControl) + extra)
 
 
 DDA = "{ type DDA; velocityRatio 1; }"
@@ -589,9 +590,10 @@ DAMPED = "{ type Newmark; beta 1; gamma 1.5; }"
 NEAR_CRITICAL = 2
 
 
-def inclineSetup(c, a, scheme=DDA):
+def inclineSetup(c, a, scheme=DDA, initialEquilibrium=False):
     """Rock and gravity tilted by a, the base's top face being the incline;
-    DDA or the damped Newmark scheme."""
+    DDA or the damped Newmark scheme; from the initial equilibrium or from
+    unloaded contact springs."""
     comment = ("// DDA (Newmark beta = 1/2, gamma = 1): exact for constant\n"
                "// accelerations; automatic penalties (50 E normal)\n"
                if scheme == DDA else
@@ -601,7 +603,9 @@ def inclineSetup(c, a, scheme=DDA):
                "// ahead); automatic penalties (50 E normal)\n")
     i = cp.incline
     contactSolution(c, scheme, stepControl="    maxDisplacementRatio    %s;\n"
-                    % num(i.maxDisplacementRatio), comment=comment)
+                    % num(i.maxDisplacementRatio), comment=comment,
+                    extra="\n// The block starts resting on loaded springs, friction let go\n"
+                    "// at t = 0\ninitialEquilibrium yes;\n" if initialEquilibrium else "")
     mechanicalProperties(c, False, "rock", "1e9", "0.25", "2000")
     gravity(c, i.g*math.sin(a), -i.g*math.cos(a),
             "// |g| = %s at a = %s degrees to -y: the base is the incline\n"
@@ -615,7 +619,11 @@ def incline(phiDeg):
     a = math.radians(cp.incline.a)
     dynamicControlDict(c, 1, 0.01, 0.1, "100 steps of 0.01 s, written every 0.1 s")
     nearCritical = 0 < cp.incline.a - phiDeg <= NEAR_CRITICAL
-    inclineSetup(c, a, DAMPED if nearCritical else DDA)
+    # Near the friction angle the damped scheme's start from the released
+    # friction lags (0.87% at 1 s at phi 29, against 0.61% from unloaded
+    # springs): that case keeps its start
+    inclineSetup(c, a, DAMPED if nearCritical else DDA,
+                 initialEquilibrium=not nearCritical)
     contactLaw(c, phiDeg, comment="// Dry friction only: phi = %d degrees (tan a = %.4f, tan phi = %.4f)\n"
                % (phiDeg, math.tan(a), math.tan(math.radians(phiDeg))))
     meshDict(c, """\
@@ -657,7 +665,7 @@ along x. From rest,
 Base 4 x 0.5 (bottom edge fixed), slider 1 x 1 resting on it at
 x = 0.25..1.25; E = 1e9, nu = 0.25, rho = 2000, plane strain; automatic
 penalties (normal 50 E); structured cover, cellSize 0.25.
-%s, deltaT 0.01 s, 100 steps, frames every 0.1 s.
+%s, deltaT 0.01 s, 100 steps, frames every 0.1 s.%s
 
 Check (`tests/verification/checkIncline.py <case> %d`): the mean x
 displacement of the slider's elements in the last frame (t about 1 s,
@@ -665,7 +673,10 @@ compared at the frame's own time) within 1%% of d(t); when the block
 sticks (phi >= a), its drift below the allowed penetration, 0.4 times
 the search distance (2.5 maxDisplacementRatio half the larger side of
 the model's bounding box: 0.01 m here).
-%s""" % (phiDeg, phiDeg, schemeText, phiDeg, schemeNote))
+%s""" % (phiDeg, phiDeg, schemeText, "" if nearCritical else """ The run starts
+from the initial equilibrium (`initialEquilibrium yes`): the slider rests
+on springs loaded by its weight, friction held until t = 0, so that it
+does not sink into them and slip ahead in the first steps.""", phiDeg, schemeNote))
 
 
 # Sliding vs toppling: block b x h on the incline of incline() (a = 30
@@ -934,6 +945,116 @@ bonded any more (contactState of contacts_<index>.vtp: 0 open, 1 bonded,
 2 sliding), within one load increment of c L + W tan phi. The first
 sliding contact and the displacement after the onset against the closed
 form are reported.
+""")
+
+
+def stickSlip():
+    """A 1 x 1 block of 1 kg/m on a base fixed at its bottom, dry friction
+    mu = 0.8, pushed on its left side by F(t) = 8 cos t (Potra's
+    stick-slip benchmark), from the initial equilibrium."""
+    c = "contact/stickSlip"
+    ss = cp.stickSlip
+    phi = math.degrees(math.atan(ss.mu))
+    functions = """\
+    motion   { type blockMotion; blocks (block); }
+    contacts { type contactStatistics; }
+"""
+    dynamicControlDict(c, num(ss.endTime), num(ss.deltaT), 0.1,
+                       "%d steps of %s s, frames every 0.1 s; the block's motion and the"
+                       "\n// contact states of every step in postProcessing/"
+                       % (round(ss.endTime/ss.deltaT), num(ss.deltaT)),
+                       functions=functions)
+    contactSolution(
+        c, DAMPED,
+        comment="// Newmark beta = 1, gamma = 3/2: the block slides at nearly its\n"
+        "// friction limit, where DDA's undamped velocity of the stiff contact\n"
+        "// springs makes it slip ahead and chatter when it stops (as for the\n"
+        "// incline near its friction angle); first order in dt. Automatic\n"
+        "// penalties (50 E normal). The block starts from the static\n"
+        "// equilibrium under its weight and F(0), so that its springs carry\n"
+        "// them from the first step\n",
+        extra="\ninitialEquilibrium yes;\n")
+    write(c, "constant/mechanicalProperties", "constant", "mechanicalProperties", """\
+// rho = %s on a %s x %s block: m = %s kg/m
+planeStress     no;
+
+thickness       1;
+
+materials
+{
+    rock { type linearElastic; E %s; nu 0.25; rho %s; }
+}
+""" % (num(ss.m/ss.L**2), num(ss.L), num(ss.L), num(ss.m), num(ss.E), num(ss.m/ss.L**2)))
+    gravity(c, 0, -ss.g, "// g = %s: mu m g = %s N/m\n" % (num(ss.g), num(ss.mu*ss.m*ss.g)))
+    contactLaw(c, phi,
+               comment="// Dry friction: mu = tan(phi) = %s\n" % num(ss.mu))
+    meshDict(c, """\
+    base  { material rock; polygon ((-0.5 -0.5) (2.5 -0.5) (2.5 0) (-0.5 0)); }
+    block { material rock; polygon ((0 0) (1 0) (1 1) (0 1)); }
+""", """\
+    fixed       { type box; min (-1 -0.500001); max (3 -0.499999); }
+    push        { type box; min (-1e-6 -1e-6); max (1e-6 1.000001); }
+""", """\
+    type        structured;
+    cellSize    0.25;
+""")
+    D(c, """\
+    fixed       { type fixedValue; value uniform (0 0 0); }
+    // F(t) = %s cos(t) [N/m] in +x, distributed as F (4 - 6 y) over
+    // 0 <= y <= 1: resultant F, no moment about the interface y = 0, so
+    // that the normal stress on the interface stays uniform
+    push
+    {
+        type        tractionDisplacement;
+        traction    expression "vector(%s*cos(%st)*(4 - 6*y), 0, 0)";
+        pressure    uniform 0;
+    }
+""" % (num(ss.F0), num(ss.F0), "" if ss.omega == 1 else num(ss.omega) + "*"))
+    scripts(c, "checkStickSlip.py")
+    readme(c, """\
+# stickSlip: a block on a base under a harmonic push
+
+Potra's stick-slip benchmark. A 1 x 1 block of rho = 1 (m = 1 kg/m) on a
+3 x 0.5 base fixed at its bottom, dry friction mu = 0.8 (Mohr-Coulomb,
+phi = atan 0.8, no cohesion), g = 9.81, pushed on its left side by
+F(t) = 8 cos t N/m, to T = 10 s. For the rigid block
+
+    m x'' = F(t) - mu m g sgn(x')    while it slides,
+    x' = 0                           while |F| <= mu m g = 7.848 N/m:
+
+slips in [0, 0.3386], [2.9463, 3.5328], [6.0879, 6.6744] and
+[9.2295, 9.8160] s, the position held between them at 4.3486e-3,
+-8.6972e-3, 4.3486e-3 m (`tests/verification/closedForms.py stickSlip`
+prints them; `selfTest.py contactClosedForms` checks them against a
+direct integration). F(0) = 8 > 7.848, so the block slides from the
+start: the case starts from the initial equilibrium
+(`initialEquilibrium yes` in system/nmmSolution), so that its springs
+carry the weight and the push from the first step, friction held until
+then. The push is distributed as F (4 - 6 y) over the side so that it has
+no moment about the interface. E = 1e9 (the block nearly rigid), nu =
+0.25, plane strain; automatic penalties (normal 50 E); structured cover,
+cellSize 0.25. Newmark with beta 1 and gamma 3/2, which damps the velocity
+of the stiff contact springs (DDA does not: at nearly the friction limit
+the block slips ahead and chatters as it stops); it is first order, and
+the first plateau's error is about 17 dt/s (1.7e-1 at deltaT 0.01, 8.5e-2
+at 0.005, 4.3e-2 at 0.0025, 2.1e-2 at 0.00125), hence deltaT 6.25e-4 s
+(16000 steps, a few seconds). blockMotion and contactStatistics write every
+step to postProcessing/.
+
+Without the initial equilibrium (`initialEquilibrium no`) the block
+starts on unloaded springs and slides too far while it sinks into them:
+the first plateau 8.9% high at deltaT 6.25e-4 (0.82% with it), the first
+slip ending 3.6e-3 s late.
+
+Check (`tests/verification/checkStickSlip.py <case>`): a slip is a run
+of steps in which every closed contact slides (postProcessing/contacts;
+the elastic block slips partially before, single contacts first), its
+start and end the middle of the step in which the last contact starts
+sliding and the first one sticks again;
+every slip's start and end within 2 deltaT of the closed form, the same
+number of slips, and the block's mean x displacement (postProcessing/
+motion, its centre against the start) on every plateau within 2% of the
+closed form.
 """)
 
 
@@ -1334,6 +1455,7 @@ if __name__ == "__main__":
     for scheme in ("trapezoidal", "DDA"):
         bouncingBlock(scheme)
     pushedBlock()
+    stickSlip()
     hertzCylinder()
     discOnDisc()
     brazilian()

@@ -74,6 +74,7 @@ void fmuInstance::load()
     solid_.reset();
     model_ = nmmSolidModel::New(caseFolder(resources_));
     model_->setLog(log_);
+    if (model_->controls()->initialEquilibrium()) model_->solveInitialEquilibrium();
     solid_ = std::make_unique<couplingInterface>(*model_);
     variables_ = std::make_unique<couplingVariables>(resources_/"system"/"couplingDict", *solid_);
     if (variables_->instantiationToken() != token_)

@@ -10,7 +10,7 @@ Usage:
 case: cantilever | plateHole | lame | sneddon | freeFall | waveBar |
       incline (phi 20) | inclineStatic (phi 31) | toppleStable |
       toppleSliding | toppleToppling | toppleSlip | bouncingBlock |
-      bouncingBlockDDA | pushedBlock
+      bouncingBlockDDA | pushedBlock | stickSlip
 Writes <outDir>/VTK/<name>_<index>.vtu and <outDir>/VTK/<name>.vtu.series
 (name = the folder name of outDir) in the solver's layout: polygons in the
 deformed position, point and cell data D, U (3 components), sigma (6: xx yy
@@ -34,6 +34,8 @@ closedForms.py at the points (point data) and at the element centroids
     bouncingBlock  restitution 0.97 instead of 1
     bouncingBlockDDA  restitution 1.02 (an energy gain) instead of 0.8
     pushedBlock    the bond breaks at F = 0.60 instead of 0.6774
+    stickSlip      (postProcessing/ rows only, no VTK) the second slip
+                   ends 3 deltaT late, carrying the block 2.5% further
 --level k (cantilever only) writes refinement level k, for the rates.
 
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -469,13 +471,43 @@ def pushedBlock(out, tamper):
         writeContacts(Path(out)/"VTK"/("contacts_%d.vtp" % i), cp, [state]*5)
 
 
+def stickSlip(out, tamper):
+    """The rows of the case's function objects (motion, contacts) for
+    every step of the closed form: a contact of five sliding in the steps
+    of the slips, the block's centre at x0 + x(t); tampered, the second
+    slip lasts 3 deltaT longer and its plateaus are 2.5% further."""
+    c = cf.stickSlip
+    dt = c.deltaT
+    windows = c.windows()
+    late = 3*dt if tamper else 0.0
+    ends = [b + (late if k == 1 else 0.0) for k, (_, b, _, _) in enumerate(windows)]
+    n = int(round(c.endTime/dt))
+    motion = ["# time block:x block:y block:rotation block:Ux block:Uy"]
+    contacts = ["# time deltaT open bonded sliding bondsBroken maxPenetration"
+                " iterations cuts"]
+    for i in range(n + 1):
+        t = i*dt
+        x = c.position(t, windows)*(1.025 if tamper and t > windows[1][0] else 1.0)
+        motion.append("%.12g %.12g 0.5 0 0 0" % (t, 0.5 + x))
+        if i == 0:
+            continue
+        middle = t - 0.5*dt
+        sliding = any(w[0] <= middle <= e for w, e in zip(windows, ends))
+        contacts.append("%.12g %.12g 0 %d %d 0 1e-9 1 0"
+                        % (t, dt, 0 if sliding else 5, 5 if sliding else 0))
+    for name, rows in (("motion", motion), ("contacts", contacts)):
+        path = Path(out)/"postProcessing"/name/"0"/(name + ".dat")
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text("\n".join(rows) + "\n")
+
+
 CASES = {"cantilever": cantilever, "plateHole": plateHole, "lame": lame,
          "sneddon": sneddon, "freeFall": freeFall, "waveBar": waveBar,
          "incline": incline, "inclineStatic": inclineStatic,
          "toppleStable": toppleStable, "toppleSliding": toppleSliding,
          "toppleToppling": toppleToppling, "toppleSlip": toppleSlip,
          "bouncingBlock": bouncingBlock, "bouncingBlockDDA": bouncingBlockDDA,
-         "pushedBlock": pushedBlock}
+         "pushedBlock": pushedBlock, "stickSlip": stickSlip}
 
 
 def main(argv):

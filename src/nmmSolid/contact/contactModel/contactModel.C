@@ -429,6 +429,29 @@ Eigen::VectorXd contactModel::forces(long nUnknowns) const
 }
 
 
+Eigen::VectorXd contactModel::frictionRelease(long nUnknowns) const
+{
+    // The law's decision on the forces of the last solve, as the first
+    // step's capStuckShearForce will make it
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(nUnknowns);
+    for (const active& a : active_)
+    {
+        const contactRecord& r = a.record;
+        if (r.state != contactState::bonded || r.bondIntact) continue;
+        contactQuery q;
+        q.state = r.state;
+        q.gap = r.gap;
+        q.Fn = r.normalForce;
+        q.Fs = r.shearForce;
+        q.length = r.length*thickness_;
+        const contactDecision d = a.law->decide(q);
+        if (d.state != contactState::sliding) continue;
+        for (const auto& [dof, c] : a.h) f[dof] += (d.frictionForce - r.shearForce)*c;
+    }
+    return f;
+}
+
+
 Eigen::VectorXd contactModel::pressureLoads(long nUnknowns) const
 {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(nUnknowns);
@@ -571,6 +594,11 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
         q.shearDisplacement = r.state != contactState::bonded && slips ? a.ds : 0;
 
         contactDecision d = a.law->decide(q);
+        if (holdFriction_ && d.state == contactState::sliding)
+        {
+            d.state = contactState::bonded;
+            d.frictionForce = 0;
+        }
         if
         (
             r.state == contactState::sliding && d.state == contactState::sliding

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <iomanip>
 #include <sstream>
+#include <utility>
 #include <ostream>
 
 namespace nmm
@@ -144,7 +145,7 @@ void nmmSolidModel::initialiseAcceleration()
 stepReport nmmSolidModel::solveStep(double dt)
 {
     if (parts_.scheme->dynamic() && parts_.scheme->accelerationFactor() != 0
-     && state_.timeIndex == 0 && state_.A.isZero())
+     && state_.timeIndex == 0 && state_.A.isZero() && !startsInEquilibrium_)
     {
         const cpuTime clock;
         initialiseAcceleration();
@@ -170,9 +171,97 @@ stepReport nmmSolidModel::solveStep(double dt)
         reportCut(sys, report);
         return report;
     }
-    updateTrial(dd, dt);
+    updateTrial(dd, dt, *parts_.scheme);
     last_ = report;
     return report;
+}
+
+
+void nmmSolidModel::solveInitialEquilibrium()
+{
+    if (!parts_.scheme->dynamic() || state_.timeIndex != 0)
+    {
+        throw fatalError("the initial equilibrium is solved at the start of a"
+            " dynamic analysis only");
+    }
+    // The temperature set for the first step is that step's load
+    const std::vector<double> next = std::exchange(temperature_, {});
+    const staticScheme statics;
+    solvingEquilibrium_ = true;
+    const cpuTime clock;
+    assembler_->setTemperatureIncrement({});
+    const auto sys = assembler_->assemble(state_, 0, statics);
+    timing_["assembly"] += clock.elapsed();
+
+    stepReport report;
+    Eigen::VectorXd dd, released;
+    if (parts_.contactMethod) solveEquilibriumWithContacts(sys, report, dd, released);
+    else
+    {
+        factoriseSystem(sys.K, 0);
+        dd = solveFactorised(sys.f, 0);
+    }
+    solvingEquilibrium_ = false;
+
+    updateTrial(dd, 0, statics);
+    trial_.timeIndex = state_.timeIndex;
+    trial_.A = releaseAcceleration(released);
+    state_ = std::move(trial_);
+    trialReady_ = false;
+    temperature_ = next;
+    startsInEquilibrium_ = true;
+    reportEquilibrium(report);
+}
+
+
+void nmmSolidModel::solveEquilibriumWithContacts
+(
+    const nmmAssembler::system& sys,
+    stepReport& report,
+    Eigen::VectorXd& dd,
+    Eigen::VectorXd& released
+)
+{
+    contactModel& c = parts_.contactMethod->contacts();
+    c.holdFriction(true);
+    const bool settled = solveWithContacts(sys, 0, report, dd);
+    c.holdFriction(false);
+    if (!settled)
+    {
+        throw fatalError("the initial equilibrium at time "
+            + std::to_string(state_.time) + " (system/nmmSolution"
+            " initialEquilibrium) cannot be solved: " + report.cutReason);
+    }
+    released = c.frictionRelease(long(sys.f.size()));
+}
+
+
+Eigen::VectorXd nmmSolidModel::releaseAcceleration(const Eigen::VectorXd& released) const
+{
+    // In balance but for the friction held beyond its cone: letting it go
+    // is what accelerates the bodies at the start (Newmark's update uses
+    // it)
+    Eigen::VectorXd A = Eigen::VectorXd::Zero(state_.D.size());
+    if (released.size() == 0 || released.isZero()) return A;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> massSolver(assembler_->mass());
+    if (massSolver.info() == Eigen::Success) A = massSolver.solve(released);
+    return A;
+}
+
+
+void nmmSolidModel::reportEquilibrium(const stepReport& r) const
+{
+    if (!log_) return;
+    const auto d = patchDisplacements();
+    *log_ << "Initial equilibrium at time " << state_.time << ":";
+    if (contacts())
+    {
+        *log_ << " open-close iterations " << r.iterations << ", contacts open "
+            << r.contacts[0] << ", bonded " << r.contacts[1] << ", sliding "
+            << r.contacts[2] << ", max penetration " << r.maxPenetration << ',';
+    }
+    *log_ << " max |D| " << (d.cols() ? d.colwise().norm().maxCoeff() : 0.0)
+        << "\n" << std::endl;
 }
 
 
@@ -185,6 +274,20 @@ void nmmSolidModel::factoriseSystem(const Eigen::SparseMatrix<double>& K, double
     }
     catch (const singularSystem& err)
     {
+        if (solvingEquilibrium_)
+        {
+            throw fatalError
+            (
+                "block '" + blockOfUnknown(err.dof()) + "' is not supported:"
+                " the static system of the initial equilibrium at time "
+                + std::to_string(state_.time) + " is singular (" + err.what()
+                + "). The initial equilibrium (system/nmmSolution"
+                " initialEquilibrium yes) needs every body supported, by"
+                " fixedValue or fixedNormal patches in 0/D or by contacts with"
+                " bodies that are; a body that is apart from the others or"
+                " would topple has none: use initialEquilibrium no"
+            );
+        }
         // The mass term makes a dynamic system positive definite in exact
         // arithmetic: a zero pivot there is rounding, not a free block
         if (parts_.scheme->dynamic())
@@ -349,7 +452,12 @@ void nmmSolidModel::setInitialVelocity(const initialVelocity& U)
 }
 
 
-void nmmSolidModel::updateTrial(const Eigen::VectorXd& dd, double dt)
+void nmmSolidModel::updateTrial
+(
+    const Eigen::VectorXd& dd,
+    double dt,
+    const timeScheme& scheme
+)
 {
     const cpuTime clock;
     trial_ = state_;
@@ -363,8 +471,8 @@ void nmmSolidModel::updateTrial(const Eigen::VectorXd& dd, double dt)
     );
     if (!temperature_.empty()) trial_.temperature = temperature_;
     trial_.D = state_.D + dd;
-    parts_.scheme->update(dd, dt, state_.V, state_.A, trial_.V, trial_.A);
-    update_->correctRotations(patchD0, rotations, parts_.scheme->dynamic(), trial_);
+    scheme.update(dd, dt, state_.V, state_.A, trial_.V, trial_.A);
+    update_->correctRotations(patchD0, rotations, scheme.dynamic(), trial_);
     if (contacts()) trial_.contacts = contacts()->records();
     trialReady_ = true;
     timing_["update"] += clock.elapsed();

@@ -35,6 +35,9 @@ const keywordTable& solutionControls::keywords()
         t.boolean("largeDisplacement", "patch positions move with the blocks"
             " and stresses rotate").defaultValue("yes");
         t.subDict("linearSolver", "linear solver { type cholmod; }");
+        t.boolean("initialEquilibrium", "dynamic: start from the static"
+            " equilibrium under the loads at the start time, contacts"
+            " loaded").defaultValue("no");
         return t;
     }();
     return table;
@@ -58,6 +61,14 @@ solutionControls::solutionControls(const dictionary& dict)
     k.validate(dict);
     dynamic_ = k.get<std::string>(dict, "analysis") == "dynamic";
     largeDisplacement_ = k.get<bool>(dict, "largeDisplacement");
+    initialEquilibrium_ = k.get<bool>(dict, "initialEquilibrium");
+    if (initialEquilibrium_ && !dynamic_)
+    {
+        // Every static step is an equilibrium already
+        throw dict.findEntry("initialEquilibrium")->error("'initialEquilibrium"
+            " yes' is for a dynamic analysis: every step of a static one is"
+            " an equilibrium");
+    }
     // Every part checks its keywords now, not when (or if) it is built
     if (const dictionary* ts = dict.findDict("timeScheme"))
     {

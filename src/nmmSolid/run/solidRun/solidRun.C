@@ -26,6 +26,12 @@ std::unique_ptr<nmmSolidModel> solidRun::createModel(const Time& runTime, std::o
         log << "Restart from " << stateDir.string() << '\n';
         model->restoreState(state);
     }
+    else if (model->controls()->initialEquilibrium())
+    {
+        // A restart's state is already an equilibrium or past it
+        model->setLog(log);
+        model->solveInitialEquilibrium();
+    }
     const auto& pc = model->elements();
     log << "    blocks " << model->geometry().nBlocks()
         << ", elements " << pc.nElements()
