@@ -57,19 +57,14 @@ void augmentedLagrangian::setUp(problem p)
 }
 
 
-bool augmentedLagrangian::solve
+bool augmentedLagrangian::settle
 (
     const nmmAssembler::system& sys,
-    const Eigen::Matrix2Xd& patchD0,
-    const std::vector<contactRecord>& history,
-    bool atStart,
     const services& srv,
     stepReport& report,
     Eigen::VectorXd& dd
 )
 {
-    beginStep(sys, patchD0, history, atStart, srv);
-    dd = Eigen::VectorXd::Zero(sys.f.size());
     bool settled = openClose(sys, srv, report, dd);
     rounds_ = 0;
     while (settled && contacts().maxPenetration() > tolerance_ && rounds_ < maxAugmentations_)
@@ -83,7 +78,7 @@ bool augmentedLagrangian::solve
         contacts().augment();
         settled = openClose(sys, srv, report, dd);
     }
-    return endStep(settled, report, dd);
+    return settled;
 }
 
 

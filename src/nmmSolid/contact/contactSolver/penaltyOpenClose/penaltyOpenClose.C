@@ -125,7 +125,7 @@ bool penaltyOpenClose::solve
 {
     beginStep(sys, patchD0, history, atStart, srv);
     dd = Eigen::VectorXd::Zero(sys.f.size());
-    const bool settled = openClose(sys, srv, report, dd);
+    const bool settled = settle(sys, srv, report, dd);
     return endStep(settled, report, dd);
 }
 
