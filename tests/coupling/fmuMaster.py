@@ -46,6 +46,12 @@ binaries/x86_64-linux/<modelIdentifier>.so by name, call the sequence):
    iteration, packed here, its fracture pressed open): fmi3Discard with
    the last time reached and a logged reason; restored, the instance
    steps on.
+8. A pile (tutorials/contact/grainsInBox, packed here): grains falling
+   into a box, contacts opening, sticking and sliding, stepped to
+   t = 0.3 in communication steps of 0.01; states saved with
+   fmi3GetFMUState at t = 0.05, 0.15 and 0.25 and each restored with
+   fmi3SetFMUState and stepped to t = 0.3 again end with the same
+   contacts and contact tractions, bit for bit.
 Exit 1 when a check fails.
 
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -366,6 +372,43 @@ def discard(t, fmi3Master):
     solid.free()
 
 
+def pileRestored(t, fmi3Master):
+    """States of a pile, restored and stepped on, repeat the run"""
+    fmu = packed(t, "tutorials/contact/grainsInBox", [], {
+        "system/couplingDict": "FoamFile { version 2.0; format ascii; class dictionary;"
+        " object couplingDict; }\nmodelName grainsInBox;\n"
+        "regions { fractures { read (); write (contactTraction slip); maxFaces 400; } }\n"})
+    solid = fmi3Master.fmu(fmu, t.work/"grainsInBoxFmu").initialized("pile")
+    h, steps = 0.01, 30
+    saved = {}
+
+    def outputs():
+        return (solid.get("fractures.nFaces"), solid.get("fractures.bodies"),
+                solid.get("fractures.contactTraction"), solid.get("fractures.slip"))
+
+    def stepTo(k0):
+        for k in range(k0, steps):
+            status, _ = solid.doStep(k*h, h)
+            if status != fmi3Master.OK:
+                return False
+            if k + 1 in (5, 15, 25) and k + 1 not in saved:
+                saved[k + 1] = solid.getState()
+        return True
+
+    t.check(stepTo(0), "the pile steps to t = 0.3 through the FMU")
+    reference = outputs()
+    t.check(reference[0] > 20, "%d contacts at t = 0.3" % reference[0])
+    for k, state in sorted(saved.items()):
+        solid.setState(state)
+        again = stepTo(k) and outputs()
+        t.check(again and all(np.array_equal(a, b) for a, b in zip(reference, again)),
+                "restored at t = %g and stepped to 0.3: the same contacts and"
+                " tractions, bit for bit" % (k*h))
+    for state in saved.values():
+        solid.freeState(state)
+    solid.free()
+
+
 def main():
     t = fmuChecks.run(__doc__)
     import fmi3Master
@@ -381,6 +424,7 @@ def main():
     twoInstances(t, fmi3Master, thermal)
     freeFall(t, fmi3Master)
     discard(t, fmi3Master)
+    pileRestored(t, fmi3Master)
     return t.end()
 
 

@@ -195,3 +195,29 @@ TEST(stepDriver, aDynamicStepNearTheDisplacementLimitHoldsTheNext)
     EXPECT_DOUBLE_EQ(driver.advance(10).deltaT, 0.405);
     EXPECT_DOUBLE_EQ(driver.advance(10).deltaT, 0.81);
 }
+
+
+TEST(stepDriver, aRestoredHistoryTakesTheStepsOfTheRunItContinues)
+{
+    // A restart builds a new driver: with the history of the restart
+    // state it proposes what the uninterrupted run's driver proposes
+    for (const double longest : {10.0, 0.3})
+    {
+        fakeSolid solid(longest);
+        solid.ratio = 0.004;
+        stepDriver straight(solid, settings(), 0.2, true);
+        straight.advance(10);
+        straight.advance(10);
+        const nmm::stepHistory h = straight.controller().history();
+        EXPECT_GT(h.last, 0);
+        EXPECT_EQ(h.displacementRatio, 0.004);
+
+        stepDriver restarted(solid, settings(), 0.2, true);
+        restarted.restore(h);
+        const double next = restarted.advance(10).deltaT;
+        const double uninterrupted = straight.advance(10).deltaT;
+        EXPECT_EQ(next, uninterrupted) << "longest step " << longest;
+        stepDriver fresh(solid, settings(), 0.2, true);
+        EXPECT_NE(fresh.advance(10).deltaT, uninterrupted) << "longest step " << longest;
+    }
+}

@@ -606,16 +606,20 @@ TEST(Time, startFromLatestTimeWithoutTimesStartsAtZero)
 
 TEST(Time, restartFromLatestTimeContinues)
 {
+    // A deliberate difference: OpenFOAM v1912 restarted from 0.009 (index
+    // 3) counts write times from the restart time (0.018, then 0.03); a
+    // restart here writes the times the uninterrupted run wrote, with the
+    // same values to the last bit, so that a killed run continues exactly
     const auto dir = freshCase("restart");
     const std::string rest = " stopAt endTime; endTime 0.03; deltaT 0.003;"
         " writeControl runTime; writeInterval 0.01;";
     writeControlDict(dir, "startFrom startTime; startTime 0;" + rest);
     runCase(dir);
+    const auto value021 = uniformTimeEntry(dir, "0.021", "value");
+    const auto value03 = uniformTimeEntry(dir, "0.03", "value");
     fs::remove_all(dir / "0.021");
     fs::remove_all(dir / "0.03");
 
-    // OpenFOAM v1912 restarted from 0.009 (index 3) counts write times from
-    // the restart time: 0.018 (index 6), then 0.03 (index 10)
     writeControlDict(dir, "startFrom latestTime; startTime 0;" + rest);
     std::ostringstream log;
     Time::options opts;
@@ -626,11 +630,63 @@ TEST(Time, restartFromLatestTimeContinues)
     const auto r = runLoop(runTime);
 
     EXPECT_EQ(r.steps.size(), 7u);
+    EXPECT_EQ(timeDirs(dir), names({"0", "0.009", "0.021", "0.03"}));
+    EXPECT_EQ(uniformTimeEntry(dir, "0.021", "index"), "7");
+    EXPECT_EQ(uniformTimeEntry(dir, "0.021", "value"), value021);
+    EXPECT_EQ(uniformTimeEntry(dir, "0.03", "index"), "10");
+    EXPECT_EQ(uniformTimeEntry(dir, "0.03", "value"), value03);
+}
+
+
+TEST(Time, restartWithoutWriteOriginCountsFromTheRestartAsOpenFOAM)
+{
+    // A time directory OpenFOAM wrote (no writeOrigin in uniform/time):
+    // OpenFOAM v1912 restarted from 0.009 (index 3) counts write times
+    // from the restart time: 0.018 (index 6), then 0.03 (index 10)
+    const auto dir = freshCase("restartOpenFOAM");
+    writeFile(dir / "0.009" / "uniform" / "time",
+        "value 0.00899999999999999932; name \"0.009\"; index 3;"
+        " deltaT 0.003; deltaT0 0.003;\n");
+    writeControlDict(dir, "startFrom latestTime; startTime 0; stopAt endTime;"
+        " endTime 0.03; deltaT 0.003; writeControl runTime; writeInterval 0.01;");
+    runCase(dir);
     EXPECT_EQ(timeDirs(dir), names({"0", "0.009", "0.018", "0.03"}));
     EXPECT_EQ(uniformTimeEntry(dir, "0.018", "index"), "6");
     EXPECT_EQ(uniformTimeEntry(dir, "0.018", "value"), "0.0179999999999999986");
     EXPECT_EQ(uniformTimeEntry(dir, "0.03", "index"), "10");
     EXPECT_EQ(uniformTimeEntry(dir, "0.03", "value"), "0.0299999999999999954");
+}
+
+
+TEST(Time, restartFromARoundedNameContinuesWithTheExactValue)
+{
+    // The name 0.00333333 is rounded; the restart continues from the
+    // value uniform/time holds, so it takes the same steps to the same
+    // write times, to the last bit
+    const auto dir = freshCase("restartExactValue");
+    const std::string rest = " stopAt endTime; endTime 0.02; deltaT 0.003;"
+        " writeControl adjustableRunTime; writeInterval 0.01;"
+        " adjustTimeStep yes; maxCo 100; maxDeltaT 0.003;";
+    writeControlDict(dir, "startFrom startTime; startTime 0;" + rest);
+    double firstValue = 0;
+    const auto straight = runCase(dir, [&](Time& t)
+    {
+        if (t.timeIndex() != 1) return;
+        firstValue = t.value();
+        t.writeNow();
+    });
+    const auto value02 = uniformTimeEntry(dir, "0.02", "value");
+    fs::remove_all(dir / "0.01");
+    fs::remove_all(dir / "0.02");
+
+    writeControlDict(dir, "startFrom latestTime;" + rest);
+    Time runTime{nmm::caseFolder(dir)};
+    EXPECT_EQ(runTime.timeName(), "0.00333333");
+    EXPECT_EQ(runTime.value(), firstValue);
+    const auto r = runLoop(runTime);
+    EXPECT_EQ(r.steps, std::vector<std::string>(straight.steps.begin() + 1, straight.steps.end()));
+    EXPECT_EQ(timeDirs(dir), names({"0", "0.00333333", "0.01", "0.02"}));
+    EXPECT_EQ(uniformTimeEntry(dir, "0.02", "value"), value02);
 }
 
 
@@ -654,7 +710,16 @@ TEST(Time, restartFindsADirectoryWrittenWithGrownPrecision)
         std::string::npos) << r.log;
     EXPECT_EQ(r.steps, names({"1.0000006", "1.0000007"}));
     EXPECT_EQ(uniformTimeEntry(dir, "1.0000007", "index"), "7");
-    EXPECT_EQ(uniformTimeEntry(dir, "1.0000007", "value"), "1.00000070000000019");
+
+    // A deliberate difference: OpenFOAM v1912 continued from the name's
+    // value (1.00000070000000019 at the end); here from uniform/time's,
+    // as the uninterrupted run does
+    const auto straight = freshCase("restartPrecisionStraight");
+    fs::create_directories(straight / "1");
+    writeControlDict(straight, "startFrom startTime; startTime 1; endTime 1.0000007;" + rest);
+    runCase(straight);
+    EXPECT_EQ(uniformTimeEntry(dir, "1.0000007", "value"),
+        uniformTimeEntry(straight, "1.0000007", "value"));
 }
 
 

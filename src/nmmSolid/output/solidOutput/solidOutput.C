@@ -397,7 +397,8 @@ std::vector<contactRecord> readContacts
 void solidOutput::writeState
 (
     const std::filesystem::path& timeDir,
-    const nmmSolidModel& model
+    const nmmSolidModel& model,
+    const stepHistory* steps
 )
 {
     const solidState& s = model.state();
@@ -414,7 +415,33 @@ void solidOutput::writeState
     writeContacts(out, s.contacts);
     // Set by a coupled thermal solver only
     if (!s.temperature.empty()) out.write("temperature", s.temperature);
+    if (steps)
+    {
+        out.write("stepControl/lastDeltaT", std::vector<double>{steps->last});
+        out.write("stepControl/lastDisplacementRatio",
+            std::vector<double>{steps->displacementRatio});
+        out.write("stepControl/lastCut", std::vector<double>{double(steps->cut)});
+    }
     out.commit();
+}
+
+
+std::optional<stepHistory> solidOutput::readStepHistory(const std::filesystem::path& timeDir)
+{
+    const auto file = timeDir/stateFileName();
+    const hdf5File in = hdf5File::openRead(file);
+    if (!in.exists("stepControl")) return std::nullopt;
+    const auto one = [&](const char* name)
+    {
+        const auto v = in.read<double>(std::string("stepControl/") + name);
+        if (v.size() != 1)
+        {
+            throw fatalError(file.string() + ": stepControl/" + name + " has "
+                + std::to_string(v.size()) + " values, not one");
+        }
+        return v[0];
+    };
+    return stepHistory{one("lastDeltaT"), one("lastDisplacementRatio"), one("lastCut") != 0};
 }
 
 

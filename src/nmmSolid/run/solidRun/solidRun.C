@@ -62,7 +62,7 @@ solidRun::solidRun(Time& runTime, std::ostream& log)
 {
     runTime_.addWriter("state", [this](const std::filesystem::path& dir)
     {
-        solidOutput::writeState(dir, *model_);
+        solidOutput::writeState(dir, *model_, driver_ ? &driver_->controller().history() : nullptr);
     });
     functions_ = std::make_unique<functionObjectList>(runTime_, *model_);
 }
@@ -117,6 +117,11 @@ void solidRun::start()
         runTime_.adjustTimeStep()
     );
     driver_->setLog(log_);
+    const auto stateDir = runTime_.timePath();
+    if (std::filesystem::exists(stateDir/solidOutput::stateFileName()))
+    {
+        if (const auto steps = solidOutput::readStepHistory(stateDir)) driver_->restore(*steps);
+    }
 }
 
 

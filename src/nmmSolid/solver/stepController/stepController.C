@@ -65,13 +65,13 @@ stepController::stepController
 double stepController::next(double upperBound)
 {
     cutThisStep_ = false;
-    if (last_ <= 0) return std::min(nominal_, upperBound);
-    double factor = lastCut_ ? 1 : settings_.growth;
-    if (lastRatio_ > 0)
+    if (last_.last <= 0) return std::min(nominal_, upperBound);
+    double factor = last_.cut ? 1 : settings_.growth;
+    if (last_.displacementRatio > 0)
     {
-        factor = std::min(factor, 0.9*settings_.maxDisplacementRatio/lastRatio_);
+        factor = std::min(factor, 0.9*settings_.maxDisplacementRatio/last_.displacementRatio);
     }
-    const double grown = last_*factor;
+    const double grown = last_.last*factor;
     const double cap = adjustable_ ? settings_.maxDeltaT : nominal_;
     return std::min({grown, cap, upperBound});
 }
@@ -88,9 +88,7 @@ std::optional<double> stepController::cut(double dt)
 
 void stepController::accepted(double dt, double displacementRatio)
 {
-    last_ = dt;
-    lastRatio_ = displacementRatio;
-    lastCut_ = cutThisStep_;
+    last_ = {dt, displacementRatio, cutThisStep_};
 }
 
 } // End namespace nmm

@@ -219,7 +219,7 @@ void Time::updateWriteTime()
         case writeControlType::adjustableRunTime:
             // Half a step of slack: the step that ends nearest to each
             // multiple of writeInterval writes
-            writeIndex = writeIndexOf((value_ - startTime_) + 0.5*deltaT_);
+            writeIndex = writeIndexOf((value_ - writeOrigin_) + 0.5*deltaT_);
             break;
 
         case writeControlType::clockTime:
@@ -279,7 +279,7 @@ void Time::adjustDeltaT()
     const double timeToNextWrite = std::max
     (
         0.0,
-        double(writeTimeIndex_ + 1)*writeInterval_ - (value_ - startTime_)
+        double(writeTimeIndex_ + 1)*writeInterval_ - (value_ - writeOrigin_)
     );
 
     const double nSteps = timeToNextWrite/deltaT_;

@@ -335,6 +335,7 @@ void Time::setControls()
     }
 
     setTime(startTime_, 0);
+    writeOrigin_ = startTime_;
     readDict();
     deltaTSave_ = deltaT_;
     deltaT0_ = deltaT_;
@@ -412,22 +413,43 @@ void Time::readStartTimeDict()
 
     // The stored name (or, failing that, value) should match the directory
     std::string storedName;
+    double storedValue = 0;
+    const bool hasValue = timeDict.readIfPresent("value", storedValue);
     if (timeDict.readIfPresent("name", storedName) && storedName == name_)
     {
-        return;
+        // The name is rounded; the value continues the run to the last bit
+        if (hasValue && timeName(storedValue) == name_)
+        {
+            startTime_ = storedValue;
+            value_ = storedValue;
+        }
     }
-    double storedValue = 0;
-    if
-    (
-        timeDict.readIfPresent("value", storedValue)
-     && timeName(storedValue) != name_
-    )
+    else if (hasValue && timeName(storedValue) != name_)
     {
         printWarning(log(), "Time read from time dictionary "
             + timeName(storedValue) + " differs from actual time " + name_
             + ".\n    This may cause unexpected behaviour. If you are not"
               " interested\n    in preserving time state delete the time"
               " dictionary " + file.string());
+    }
+    continueWriteTimes(timeDict);
+}
+
+
+void Time::continueWriteTimes(const dictionary& timeDict)
+{
+    if (!timeDict.readIfPresent("writeOrigin", writeOrigin_)) return;
+    if
+    (
+        writeControl_ == writeControlType::runTime
+     || writeControl_ == writeControlType::adjustableRunTime
+    )
+    {
+        // As the step that wrote this time counted it
+        writeTimeIndex_ = static_cast<long long>
+        (
+            std::min(((value_ - writeOrigin_) + 0.5*deltaT_)/writeInterval_, 1e18)
+        );
     }
 }
 
@@ -488,7 +510,8 @@ void Time::writeTimeDict(const fs::path& file) const
         << "name \"" << name_ << "\";\n"
         << "index " << timeIndex_ << ";\n"
         << "deltaT " << formatScalar(deltaT_) << ";\n"
-        << "deltaT0 " << formatScalar(deltaT0_) << ";\n";
+        << "deltaT0 " << formatScalar(deltaT0_) << ";\n"
+        << "writeOrigin " << formatScalar(writeOrigin_) << ";\n";
 
     const dictionary timeDict = dictionary::parse(text.str(), file.string());
 
