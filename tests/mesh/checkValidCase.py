@@ -4,11 +4,13 @@
 Usage:
     checkValidCase.py --nmmMesh <exe> --case <dir> --work <dir> --area <A>
         [--holes <n>] [--materials <id of block 0> <id of block 1> ...]
+        [--says <text> ...]
 
 The case is copied to <work>, nmmMesh runs there (without -check) and
-must exit with 0, print "Mesh OK." and write constant/nmmMesh/nmmMesh.h5
-and VTK/mesh.vtu. The .vtu is read with vtkXMLUnstructuredGridReader
-(VTK errors and warnings fail the check) and must have:
+must exit with 0, print "Mesh OK." and each --says text, and write
+constant/nmmMesh/nmmMesh.h5 and VTK/mesh.vtu. The .vtu is read with
+vtkXMLUnstructuredGridReader (VTK errors and warnings fail the check) and
+must have:
 
   - as many cells as the report's "elements:", all VTK_POLYGON;
   - the cell data blockId, materialId, area, areaRatio, triangle,
@@ -53,6 +55,7 @@ def main():
     ap.add_argument("--area", required=True, type=float)
     ap.add_argument("--holes", type=int, default=0)
     ap.add_argument("--materials", type=int, nargs="*")
+    ap.add_argument("--says", nargs="*", default=[])
     args = ap.parse_args()
 
     try:
@@ -73,6 +76,9 @@ def main():
         fail(f"nmmMesh exit code {run.returncode}")
     if "Mesh OK." not in run.stdout:
         fail("no 'Mesh OK.' in the output")
+    for text in args.says:
+        if text not in run.stdout:
+            fail(f"no '{text}' in the output")
     m = re.search(r"^\s*elements:\s+(\d+)\s*$", run.stdout, re.M)
     if not m:
         fail("no 'elements:' line in the report")

@@ -10,9 +10,12 @@ Description
     write constant/nmmMesh/nmmMesh.h5 (nmm::nmmMeshFile, read by the
     solver) and VTK/mesh.vtu for ParaView.
 
-    The report gives the counts (blocks, joints, holes, vertices, cover
-    nodes and triangles, cut triangles, physical patches, patches extended
-    from a neighbour by the sliver treatment, elements, unknowns), the
+    The report lists the vertices snapped onto a neighbouring block
+    (snapTolerance: block, vertex, distance moved, where to and onto what,
+    then their number and the largest move), then gives the counts
+    (blocks, joints, holes, vertices, cover nodes and triangles, cut
+    triangles, physical patches, patches extended from a neighbour by the
+    sliver treatment, elements, unknowns), the
     areas (the material area of the geometry against the sum of the
     element areas: the elements must tile the material, so their relative
     difference is at round-off level, and more than 1e-12 is a failure),
@@ -41,6 +44,7 @@ Usage
 #include "nmmSolid/cover/mathematicalCover/mathematicalCover/mathematicalCover.H"
 #include "nmmSolid/cover/physicalCover/physicalCover.H"
 #include "nmmSolid/geometry/blockGeometry/blockGeometry.H"
+#include "nmmSolid/geometry/geometryCheck/geometryCheck.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/argList/argList.H"
 #include "nmmSolid/io/case/caseFolder/caseFolder.H"
@@ -193,6 +197,11 @@ std::vector<std::string> report
 {
     std::vector<std::string> failures;
     const auto& stats = pc.stats();
+
+    std::cout << "\nSnapping vertices within snapTolerance ("
+        << nmm::geometryCheck::measureText(geometry.snapDistance())
+        << " m) of another block onto it\n";
+    nmm::vertexSnap::print(std::cout, geometry.snapMoves(), geometry.blocks());
 
     std::cout << "\nMesh stats\n";
     row("blocks", geometry.nBlocks());

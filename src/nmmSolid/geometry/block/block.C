@@ -53,16 +53,29 @@ block::block
     // Material on the left of every edge: outer counter-clockwise, holes
     // clockwise (the sign is taken with exact predicates, not from the area)
     reversed_.assign(loops_.size(), false);
+    inputVertex_.resize(loops_.size());
     for (std::size_t l = 0; l < loops_.size(); ++l)
     {
+        const std::size_t n = loops_[l].size();
         const int wanted = l == 0 ? 1 : -1;
         if (exact::loopOrientation(loops_[l]) != wanted)
         {
             reverseKeepingFirst(loops_[l]);
             reversed_[l] = true;
         }
+        inputVertex_[l].resize(n);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            inputVertex_[l][i] = reversed_[l] ? (n - i) % n : i;
+        }
     }
+    setBounds();
+}
 
+
+void block::setBounds()
+{
+    bounds_.setEmpty();
     for (const auto& p : loops_[0]) bounds_.extend(p);
 }
 
@@ -133,18 +146,55 @@ double block::area() const
 }
 
 
-std::size_t block::inputVertex(std::size_t l, std::size_t i) const
+std::size_t block::inputEdge(std::size_t l, std::size_t i) const
 {
+    // Input edge k runs from input vertex k to k+1: the input vertex that
+    // starts it is the first one before the stored edge (after it, for a
+    // loop stored reversed), skipping points added by snapping
     const std::size_t n = loops_[l].size();
-    return reversed_[l] ? (n - i) % n : i;
+    i %= n;
+    if (!reversed_[l])
+    {
+        while (inputVertex_[l][i] == npos) i = (i + n - 1) % n;
+        return inputVertex_[l][i];
+    }
+    std::size_t j = (i + 1) % n;
+    while (inputVertex_[l][j] == npos) j = (j + 1) % n;
+    return inputVertex_[l][j];
 }
 
 
-std::size_t block::inputEdge(std::size_t l, std::size_t i) const
+std::size_t block::nInputEdges(std::size_t l) const
 {
-    // Stored edge i joins input vertices n-i and n-i-1: input edge n-1-i
-    const std::size_t n = loops_[l].size();
-    return reversed_[l] ? n - 1 - i : i;
+    return std::size_t(std::count_if(inputVertex_[l].begin(), inputVertex_[l].end(),
+        [](std::size_t k) { return k != npos; }));
+}
+
+
+std::vector<std::size_t> block::storedEdges(std::size_t l, std::size_t inputIndex) const
+{
+    std::vector<std::size_t> pieces;
+    for (std::size_t i = 0; i < loops_[l].size(); ++i)
+    {
+        if (inputEdge(l, i) == inputIndex) pieces.push_back(i);
+    }
+    return pieces;
+}
+
+
+void block::moveVertex(std::size_t l, std::size_t i, const Eigen::Vector2d& p)
+{
+    loops_[l][i % loops_[l].size()] = p;
+    setBounds();
+}
+
+
+void block::splitEdge(std::size_t l, std::size_t i, const Eigen::Vector2d& p)
+{
+    const std::size_t at = i % loops_[l].size() + 1;
+    loops_[l].insert(loops_[l].begin() + long(at), p);
+    inputVertex_[l].insert(inputVertex_[l].begin() + long(at), npos);
+    setBounds();
 }
 
 

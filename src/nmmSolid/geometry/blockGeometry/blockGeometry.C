@@ -2,6 +2,7 @@
 
 #include "nmmSolid/geometry/geometryCheck/geometryCheck.H"
 #include "nmmSolid/geometry/patchSelectors/patchSelector/patchSelector.H"
+#include "nmmSolid/io/dictionary/token.H"
 
 #include <algorithm>
 #include <array>
@@ -119,6 +120,11 @@ const keywordTable& blockGeometry::keywords()
         t.list("joints", "cracks inside blocks: ( name { points (..); } ... )");
         t.any("patches", "named sets of boundary edges: { name { type ..; } ... }");
         t.subDict("cover", "the mathematical cover (read by the mesh)");
+        t.scalar("snapTolerance", "vertices closer than this to another block's "
+            "vertex or edge are moved onto it before the overlap check, so that "
+            "rounded coordinates touch instead of overlapping; relative to the "
+            "model size (the diagonal of the blocks' box); 0 snaps nothing")
+            .range(0, 1e-3).defaultValue(defaultSnapTolerance);
         return t;
     }();
     return table;
@@ -198,7 +204,33 @@ void blockGeometry::readBlocks(const dictionary& dict)
         bounds_.extend(blocks_.back().bounds());
         blockIndex_.emplace(blocks_.back().name(), blocks_.size() - 1);
     }
-    geometryCheck::checkOverlaps(blocks_);
+    snapBlocks(keywords().get<double>(dict, "snapTolerance"));
+    geometryCheck::checkOverlaps(blocks_, snapDistance_);
+}
+
+
+void blockGeometry::snapBlocks(double snapTolerance)
+{
+    snapDistance_ = snapTolerance*modelSize();
+    snapMoves_ = vertexSnap::snap(blocks_, snapDistance_);
+    if (snapMoves_.empty()) return;
+
+    std::vector<bool> changed(blocks_.size(), false);
+    for (const auto& m : snapMoves_)
+    {
+        changed[m.block] = true;
+        if (m.added) changed[m.ontoBlock] = true;
+    }
+    const std::string note = " (after snapping the vertices within snapTolerance "
+        + formatScalar(snapTolerance) + " of the model size, "
+        + geometryCheck::measureText(snapDistance_) + " m, of another block onto "
+        "it; a smaller snapTolerance, or 0, snaps less)";
+    bounds_.setEmpty();
+    for (std::size_t b = 0; b < blocks_.size(); ++b)
+    {
+        if (changed[b]) geometryCheck::recheckSnapped(blocks_[b], note);
+        bounds_.extend(blocks_[b].bounds());
+    }
 }
 
 

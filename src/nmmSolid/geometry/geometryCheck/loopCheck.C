@@ -7,8 +7,11 @@
 #include "nmmSolid/geometry/exactPredicates/exactPredicates.H"
 #include "nmmSolid/io/dictionary/token.H"
 
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <optional>
+#include <sstream>
 #include <utility>
 
 namespace nmm
@@ -190,20 +193,67 @@ std::string edgeText(const block& b, std::size_t l, std::size_t i)
 }
 
 
+std::string measureText(double v)
+{
+    std::ostringstream os;
+    os << std::setprecision(4) << v;
+    return os.str();
+}
+
+
 std::string vertexText(const block& b, std::size_t l, std::size_t i)
 {
-    return block::loopName(l) + " vertex " + std::to_string(b.inputVertex(l, i))
+    const std::size_t k = b.inputVertex(l, i);
+    if (k == block::npos)
+    {
+        // A point snapping added: named by the edge it split
+        return block::loopName(l) + " edge " + std::to_string(b.inputEdge(l, i))
+            + " point " + pointText(b.vertex(l, i));
+    }
+    return block::loopName(l) + " vertex " + std::to_string(k)
         + " " + pointText(b.vertex(l, i));
 }
 
 
 void checkLoop(pointLoop& loop, const std::string& loopName, const subject& who)
 {
-    const pathWords w{loopName, "vertex", "edge"};
     if (loop.size() > 1 && loop.front() == loop.back())
     {
         loop.pop_back();
     }
+    checkLoopShape(loop, loopName, who);
+}
+
+
+void recheckSnapped(const block& b, const std::string& note)
+{
+    const subject who{"Block", b.name(), b.where()};
+    try
+    {
+        for (std::size_t l = 0; l < b.loops().size(); ++l)
+        {
+            // As read, so that the vertex numbers are the user's (but for
+            // points added to the loop's edges)
+            pointLoop asRead = b.loop(l);
+            if (b.reversed(l)) std::reverse(asRead.begin() + 1, asRead.end());
+            checkLoopShape(asRead, block::loopName(l), who);
+            if (exact::loopOrientation(b.loop(l)) != (l == 0 ? 1 : -1))
+            {
+                throw who.error(block::loopName(l) + " has turned inside out");
+            }
+        }
+        checkHoles(b);
+    }
+    catch (const IOerror& err)
+    {
+        throw IOerror(err.message() + note, err.where(), err.keyword());
+    }
+}
+
+
+void checkLoopShape(const pointLoop& loop, const std::string& loopName, const subject& who)
+{
+    const pathWords w{loopName, "vertex", "edge"};
     checkFinite(loop, w, who);
     if (loop.size() < 3)
     {

@@ -9,13 +9,28 @@
 // by pieces of either boundary; following such a piece leads to (ii) at a
 // point where it leaves the other block, or round a whole loop (iii).
 // Everything is decided with exact predicates on the input points.
+//
+// An overlap's message gives its size, so that a rounding error (beyond
+// snapTolerance) can be told from a mistake: the area of the intersection
+// of the two blocks (CGAL's Boolean operations, exact constructions), and
+// the depth: the largest distance of a vertex of one block inside the
+// other from the other's boundary, or, where no vertex lies inside (the
+// boundaries only cross), the overlap's width 2 area/perimeter.
 
 #include "nmmSolid/geometry/geometryCheck/geometryCheck.H"
 
 #include "nmmSolid/geometry/boxSearch/boxSearch.H"
 #include "nmmSolid/geometry/exactPredicates/exactPredicates.H"
 
+#include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_with_holes_2.h>
+
 #include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
 #include <memory>
 #include <tuple>
 
@@ -26,6 +41,111 @@ namespace geometryCheck
 
 namespace
 {
+
+using K = CGAL::Exact_predicates_exact_constructions_kernel;
+using cgalPolygon = CGAL::Polygon_2<K>;
+using cgalPolygonWithHoles = CGAL::Polygon_with_holes_2<K>;
+
+cgalPolygon cgalLoop(const pointLoop& loop)
+{
+    cgalPolygon p;
+    for (const auto& q : loop) p.push_back(K::Point_2(q.x(), q.y()));
+    return p;
+}
+
+
+//- The block as CGAL's polygon with holes (outer counter-clockwise,
+//  holes clockwise, as stored)
+cgalPolygonWithHoles cgalShape(const block& b)
+{
+    cgalPolygonWithHoles shape(cgalLoop(b.outer()));
+    for (std::size_t h = 0; h < b.nHoles(); ++h) shape.add_hole(cgalLoop(b.hole(h)));
+    return shape;
+}
+
+
+double perimeter(const cgalPolygon& p)
+{
+    double length = 0;
+    for (auto e = p.edges_begin(); e != p.edges_end(); ++e)
+    {
+        length += std::sqrt(CGAL::to_double(e->squared_length()));
+    }
+    return length;
+}
+
+
+//- Area and perimeter of the intersection of two blocks
+std::pair<double, double> intersectionAreaAndPerimeter(const block& a, const block& b)
+{
+    std::vector<cgalPolygonWithHoles> pieces;
+    CGAL::intersection(cgalShape(a), cgalShape(b), std::back_inserter(pieces));
+    K::FT area = 0;
+    double length = 0;
+    for (const auto& piece : pieces)
+    {
+        area += piece.outer_boundary().area();
+        length += perimeter(piece.outer_boundary());
+        for (auto h = piece.holes_begin(); h != piece.holes_end(); ++h)
+        {
+            area += h->area();      // clockwise: negative
+            length += perimeter(*h);
+        }
+    }
+    return {CGAL::to_double(area), length};
+}
+
+
+//- Distance from p to the boundary of b
+double boundaryDistance(const block& b, const Eigen::Vector2d& p)
+{
+    double d = std::numeric_limits<double>::infinity();
+    for (const auto& [l, i] : b.edgeList())
+    {
+        const auto [e0, e1] = b.edge(l, i);
+        const Eigen::Vector2d e = e1 - e0;
+        const double t = std::clamp((p - e0).dot(e)/e.squaredNorm(), 0.0, 1.0);
+        d = std::min(d, (e0 + t*e - p).norm());
+    }
+    return d;
+}
+
+
+//- The vertex of x deepest inside y, as (depth, description); depth 0 if
+//  none lies inside
+std::pair<double, std::string> deepestVertex(const block& x, const block& y)
+{
+    std::pair<double, std::string> deepest{0, ""};
+    for (const auto& [l, i] : x.edgeList())
+    {
+        if (y.side(x.vertex(l, i)) != exact::side::inside) continue;
+        const double d = boundaryDistance(y, x.vertex(l, i));
+        if (d > deepest.first)
+        {
+            deepest = {d, vertexText(x, l, i) + " of '" + x.name() + "' lies "
+                + measureText(d) + " m inside '" + y.name() + "'"};
+        }
+    }
+    return deepest;
+}
+
+
+//- "the overlap has area .. m^2 and depth .. m (...)"
+std::string overlapSize(const block& a, const block& b)
+{
+    const auto [area, length] = intersectionAreaAndPerimeter(a, b);
+    auto deepest = deepestVertex(b, a);
+    const auto other = deepestVertex(a, b);
+    if (other.first > deepest.first) deepest = other;
+    if (deepest.first == 0)
+    {
+        deepest = {length > 0 ? 2*area/length : 0, "no vertex of either block lies "
+            "inside the other: the depth is the overlap's width, 2 area/perimeter"};
+    }
+    return "the overlap has area " + measureText(area) + " m^2 and depth "
+        + measureText(deepest.first) + " m (" + deepest.second + ")";
+}
+
 
 //- Edges of a block with their boxes, made once per block
 struct blockEdges
@@ -59,14 +179,20 @@ class pairCheck
     const block& b_;
     const blockEdges& ea_;
     const blockEdges& eb_;
+    const double snapDistance_;
     std::vector<bool> touchedA_, touchedB_;     // per loop: meets the other
 
     IOerror overlap(const std::string& detail) const
     {
         const subject who{"Block", b_.name(), b_.where()};
+        const std::string snapped = snapDistance_ > 0
+            ? "Vertices within snapTolerance (" + measureText(snapDistance_)
+                + " m here) of another block were snapped onto it before this check"
+            : "snapTolerance is 0: no vertex was snapped";
         return who.error("overlaps block '" + a_.name() + "' (read at "
-            + a_.where().str() + "): " + detail + ". Blocks may touch along "
-            "edges and at vertices, but their interiors must not overlap");
+            + a_.where().str() + "): " + detail + "; " + overlapSize(a_, b_)
+            + ". Blocks may touch along edges and at vertices, but their "
+            "interiors must not overlap. " + snapped);
     }
 
     //- Vertex iv of loop l of x lies on edge (ly, iy) of y
@@ -134,9 +260,14 @@ class pairCheck
     }
 
 public:
-    pairCheck(const block& a, const block& b, const blockEdges& ea, const blockEdges& eb)
+    pairCheck
+    (
+        const block& a, const block& b,
+        const blockEdges& ea, const blockEdges& eb,
+        double snapDistance
+    )
     :
-        a_(a), b_(b), ea_(ea), eb_(eb),
+        a_(a), b_(b), ea_(ea), eb_(eb), snapDistance_(snapDistance),
         touchedA_(a.loops().size(), false),
         touchedB_(b.loops().size(), false)
     {}
@@ -157,7 +288,7 @@ public:
 } // End anonymous namespace
 
 
-void checkOverlaps(const std::vector<block>& blocks)
+void checkOverlaps(const std::vector<block>& blocks, double snapDistance)
 {
     std::vector<boxSearch::box> boxes;
     boxes.reserve(blocks.size());
@@ -180,7 +311,7 @@ void checkOverlaps(const std::vector<block>& blocks)
     };
     for (const auto& [i, j] : candidates)
     {
-        pairCheck(blocks[i], blocks[j], edgesOf(i), edgesOf(j)).run();
+        pairCheck(blocks[i], blocks[j], edgesOf(i), edgesOf(j), snapDistance).run();
     }
 }
 

@@ -9,6 +9,7 @@
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/output/solidOutput/solidOutput.H"
 
+#include <algorithm>
 #include <filesystem>
 #include <ostream>
 
@@ -39,6 +40,13 @@ std::unique_ptr<nmmSolidModel> solidRun::createModel(const Time& runTime, std::o
         << " (" << pc.stats().nExtendedPatches << " extended)"
         << ", unknowns " << pc.nUnknowns() << '\n'
         << "    analysis " << model->scheme().name() << '\n';
+    if (const auto& moves = model->geometry().snapMoves(); !moves.empty())
+    {
+        double largest = 0;
+        for (const auto& m : moves) largest = std::max(largest, m.distance());
+        log << "    " << moves.size() << " vertex moves snapped blocks onto their "
+            "neighbours (snapTolerance; largest " << largest << " m; nmmMesh lists them)\n";
+    }
     if (const auto* c = model->contacts())
     {
         // The values "auto" stands for, so that a log tells the whole story

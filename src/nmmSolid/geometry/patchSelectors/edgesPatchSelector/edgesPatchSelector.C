@@ -48,13 +48,16 @@ void edgesPatchSelector::select(const blockGeometry& geometry, geometryPatch& pa
                 + "'" + (hint.empty() ? "" : "; " + hint), edgesWhere_, "edges");
         }
         const block& blk = geometry.blocks()[b];
-        if (index < 0 || static_cast<std::size_t>(index) >= blk.nEdges(0))
+        if (index < 0 || static_cast<std::size_t>(index) >= blk.nInputEdges(0))
         {
             throw IOerror("Patch '" + name() + "': block '" + blockName + "' has "
-                "edges 0 to " + std::to_string(blk.nEdges(0) - 1) + ", not "
+                "edges 0 to " + std::to_string(blk.nInputEdges(0) - 1) + ", not "
                 + std::to_string(index), edgesWhere_, "edges");
         }
-        patch.edges.push_back({b, 0, blk.storedEdge(0, std::size_t(index))});
+        for (const std::size_t i : blk.storedEdges(0, std::size_t(index)))
+        {
+            patch.edges.push_back({b, 0, i});
+        }
     }
 }
 
