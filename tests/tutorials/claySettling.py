@@ -16,9 +16,14 @@ with numbers from summary.py:
     value (the run loses about a quarter; the paper reports about 60% for
     its own, unpublished platelets), and its top comes down by at least
     1 um of the 4.8 um;
-  - the largest vertical displacement is at least 1 um (the paper reports
-    2.5 um) and no more than the highest platelet's height above the
-    floor at the start, 4.9 um: a platelet cannot fall through the floor;
+  - the largest vertical displacement is the paper's 2.5 um within
+    0.7 um. The paper does not publish its platelets, so its 2.5 um is
+    one draw of a random suspension; what this discretisation of the
+    suspension (30 rectangles placed at random) can give was measured
+    with the reduced run for eight seeds (1 to 8): 2.45 to 3.17 um, mean
+    2.75 um, standard deviation 0.23 um; 0.7 um is three of those. The
+    cells add less: 0.3 um cells instead of 0.5 um change it by 0.09 um
+    for seed 7 (the tutorial's README);
   - the contacts hold: the largest penetration is below 1% of the
     thinnest platelet (0.22 um).
 Without the body force nothing moves, and the settling checks fail.
@@ -32,6 +37,11 @@ SPDX-License-Identifier: GPL-3.0-or-later
 import sys
 
 import paperTutorial
+
+# The paper's largest vertical displacement, and three standard deviations
+# of it over random platelet placements (see above)
+PAPER_MAX_DOWN_UM = 2.5
+SCATTER_UM = 0.7
 
 
 def main(argv):
@@ -54,8 +64,9 @@ def main(argv):
     check(r["topStart_um"] - r["topEnd_um"] > 1,
           "the sediment's top comes down from %.2f to %.2f um"
           % (r["topStart_um"], r["topEnd_um"]))
-    check(1 < r["maxDown_um"] < 4.9,
-          "largest vertical displacement %.2f um" % r["maxDown_um"])
+    check(abs(r["maxDown_um"] - PAPER_MAX_DOWN_UM) <= SCATTER_UM,
+          "largest vertical displacement %.2f um against the paper's %.1f +- %.1f um"
+          % (r["maxDown_um"], PAPER_MAX_DOWN_UM, SCATTER_UM))
     check(r["maxPenetration"] < 0.01*0.22e-6,
           "largest penetration %.2g m" % r["maxPenetration"])
     return check.exitCode()

@@ -15,12 +15,12 @@ import sys
 from pathlib import Path
 
 
-def runReduced(argv, name, runFolders, usage):
+def runReduced(argv, name, runFolders, usage, allrunArgs=("-reduced",)):
     """Copies tutorials/paper/<name> to <workDir>/<name> without the run
     folders (glob patterns) an earlier Allrun left, and runs
-    './Allrun -reduced' there with <binDir> on the PATH. argv is
-    <binDir> <projectDir> <workDir>; returns the copy, or None (after
-    printing usage) when argv is not that."""
+    './Allrun -reduced' (or './Allrun <allrunArgs>') there with <binDir>
+    on the PATH. argv is <binDir> <projectDir> <workDir>; returns the
+    copy, or None (after printing usage) when argv is not that."""
     if len(argv) != 3:
         print(usage)
         return None
@@ -33,7 +33,7 @@ def runReduced(argv, name, runFolders, usage):
                     ignore=shutil.ignore_patterns(*runFolders, "summary.md"))
     env = dict(os.environ, NMM_PROJECT_DIR=str(project),
                PATH=str(binDir) + os.pathsep + os.environ.get("PATH", ""))
-    subprocess.run(["bash", "./Allrun", "-reduced"], cwd=case, env=env, check=False)
+    subprocess.run(["bash", "./Allrun", *allrunArgs], cwd=case, env=env, check=False)
     return case
 
 

@@ -134,6 +134,13 @@ TEST(contactSearch, penetrationBeyondDistanceIsDropped)
         loop(1, {{0.3, -0.2}, {0.8, 0.5}, {0.3, 1}, {-0.2, 0.5}})
     };
     EXPECT_TRUE(contactSearch(d).find(loops).empty());
+    // Within a distance beyond the depth the same corner is the one contact
+    const auto c = contactSearch(0.25).find(loops);
+    ASSERT_EQ(c.size(), 1u);
+    EXPECT_EQ(c[0].vertexLoop, 1); EXPECT_EQ(c[0].vertex, 0);
+    EXPECT_EQ(c[0].edgeLoop, 0); EXPECT_EQ(c[0].edge, 2);
+    EXPECT_NEAR(c[0].gap, -0.2, 1e-12);
+    EXPECT_NEAR(c[0].t, (2 - 0.3)/4, 1e-12);
 }
 
 
@@ -302,11 +309,38 @@ TEST(contactSearch, vertexPastAShortEdgeIsNotInside)
         loop(1, {{0, 0.003}, {0.0001, 0.00294}, {0.03, 0.006}, {0, 0.03}, {-0.02, 0.02}})
     };
     const auto c = contactSearch(d).find(loops);
-    ASSERT_FALSE(c.empty());
     for (const auto& k : c)
     {
         EXPECT_GT(k.gap, 0) << "vertex " << k.vertex << " of loop " << k.vertexLoop
             << " against edge " << k.edge << " of loop " << k.edgeLoop;
+    }
+    // The grain's two bottom vertices and its right corner over the
+    // floor's pieces they lie over, at their heights, and the floor's
+    // vertex (0.0232, 0) under the grain's long lower edge (0.0001,
+    // 0.00294)-(0.03, 0.006), at its distance from that edge (by hand).
+    // The floor's vertex (0.0065, 0) is 0.0072 from the grain's cut
+    // corner: a vertex pair, which may stand for its contact (Fig. 5)
+    const double lowerEdge = std::hypot(0.0299, 0.00306);
+    const auto below = [&](double x)
+    {
+        return (0.00294*0.0299 + (x - 0.0001)*0.00306)/lowerEdge;
+    };
+    const std::map<std::pair<int, int>, std::pair<int, double>> expected
+    {
+        {{1, 0}, {4, 0.003}}, {{1, 1}, {4, 0.00294}}, {{1, 2}, {2, 0.006}},
+        {{0, 3}, {1, below(0.0232)}}
+    };
+    std::map<std::pair<int, int>, std::pair<int, double>> found;
+    for (const auto& k : c) found[{k.vertexLoop, k.vertex}] = {k.edge, k.gap};
+    // One contact a vertex, none for a vertex farther than d
+    EXPECT_EQ(found.size(), c.size());
+    EXPECT_LE(found.size(), expected.size() + 1);
+    for (const auto& [v, e] : expected)
+    {
+        ASSERT_EQ(found.count(v), 1u) << "vertex " << v.second << " of loop " << v.first;
+        EXPECT_EQ(found[v].first, e.first) << "vertex " << v.second << " of loop " << v.first;
+        EXPECT_NEAR(found[v].second, e.second, 1e-12)
+            << "vertex " << v.second << " of loop " << v.first;
     }
 }
 
@@ -439,6 +473,29 @@ TEST(contactSearch, blockNeverTouchesItself)
     };
     EXPECT_TRUE(contactSearch(d).find(loops).empty());
     EXPECT_TRUE(contactSearch(d).loopPairs(loops).empty());
+
+    // The same gaps between two blocks are found: the U cut in two at its
+    // middle (arms 0.02 apart, facing along x = 1.49 and 1.51), and the
+    // hole as a block of its own 0.02 beside the other block
+    const std::vector<contactLoop> apart
+    {
+        loop(0, {{0, 0}, {1.49, 0}, {1.49, 2}, {0, 2}}),
+        loop(1, {{1.51, 0}, {3, 0}, {3, 2}, {1.51, 2}}),
+        rect(2, 10, 0, 12, 2),
+        loop(3, {{12.02, 0.5}, {13, 0.5}, {13, 1.5}, {12.02, 1.5}})
+    };
+    const auto c = contactSearch(d).find(apart);
+    ASSERT_FALSE(c.empty());
+    std::map<std::pair<int, int>, int> pairs;
+    for (const auto& k : c)
+    {
+        ++pairs[{std::min(k.vertexLoop, k.edgeLoop), std::max(k.vertexLoop, k.edgeLoop)}];
+        EXPECT_NEAR(k.gap, 0.02, 1e-12) << "vertex " << k.vertex << " of loop "
+            << k.vertexLoop << " against edge " << k.edge << " of loop " << k.edgeLoop;
+    }
+    EXPECT_EQ(pairs.size(), 2u);
+    EXPECT_GT(pairs[std::make_pair(0, 1)], 0);
+    EXPECT_GT(pairs[std::make_pair(2, 3)], 0);
 }
 
 

@@ -13,7 +13,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -91,6 +93,33 @@ struct testCase : nmm::test::modelCase
 std::string errorOfFunctions(const testCase& c)
 {
     return errorOf([&] { c.functions(); }).message();
+}
+
+
+//- The first line of a postProcessing table
+std::string headerOf(const std::filesystem::path& file)
+{
+    std::ifstream is(file);
+    std::string line;
+    std::getline(is, line);
+    return line;
+}
+
+
+//- The rows of a postProcessing table, below its header
+std::vector<std::vector<double>> rowsOf(const std::filesystem::path& file)
+{
+    std::ifstream is(file);
+    std::vector<std::vector<double>> rows;
+    std::string line;
+    std::getline(is, line);
+    while (std::getline(is, line))
+    {
+        std::istringstream words(line);
+        rows.emplace_back();
+        for (double v; words >> v; ) rows.back().push_back(v);
+    }
+    return rows;
 }
 
 
@@ -394,27 +423,38 @@ TEST(functionObject, filesUnderPostProcessing)
         }
         EXPECT_EQ(list[0].file(), c.dir.path/"postProcessing/fall/0/fall.dat");
     }
-    for (const std::string name : {"fall", "e"})
+    EXPECT_EQ(headerOf(c.dir.path/"postProcessing/fall/0/fall.dat"),
+        "# time a:x a:y a:rotation a:Ux a:Uy");
+    EXPECT_EQ(headerOf(c.dir.path/"postProcessing/e/0/e.dat"),
+        "# time kinetic strain contact work total");
+
+    // The rows are the free fall's closed form (Newmark's average
+    // acceleration is exact for a constant one), to the 12 digits written:
+    // the centre at 0.5 - g t^2/2 with -g t, the kinetic energy and the
+    // work of gravity m g^2 t^2/2 with m = rho A = 2000 kg/m
+    const double g = 9.81, m = 2000;
+    const auto fall = rowsOf(c.dir.path/"postProcessing/fall/0/fall.dat");
+    const auto energy = rowsOf(c.dir.path/"postProcessing/e/0/e.dat");
+    ASSERT_EQ(fall.size(), 4u);
+    ASSERT_EQ(energy.size(), 4u);
+    for (std::size_t n = 0; n < fall.size(); ++n)
     {
-        std::ifstream is(c.dir.path/"postProcessing"/name/"0"/(name + ".dat"));
-        ASSERT_TRUE(is.good()) << name;
-        std::string line;
-        std::getline(is, line);
-        EXPECT_EQ(line.substr(0, 7), "# time ") << line;
-        int rows = 0;
-        double t = -1;
-        while (std::getline(is, line))
+        const double t = 0.01*double(n);
+        const std::vector<double> motion{t, 0.5, 0.5 - g*t*t/2, 0, 0, -g*t};
+        ASSERT_EQ(fall[n].size(), motion.size()) << "row " << n;
+        for (std::size_t k = 0; k < motion.size(); ++k)
         {
-            ++rows;
-            std::istringstream(line) >> t;
+            EXPECT_NEAR(fall[n][k], motion[k], 1e-11) << "fall.dat row " << n << " column " << k;
         }
-        EXPECT_EQ(rows, 4) << name;
-        EXPECT_NEAR(t, 0.03, 1e-12);
+        const double work = m*g*g*t*t/2;
+        const std::vector<double> balance{t, work, 0, 0, work, 0};
+        ASSERT_EQ(energy[n].size(), balance.size()) << "row " << n;
+        for (std::size_t k = 0; k < balance.size(); ++k)
+        {
+            EXPECT_NEAR(energy[n][k], balance[k], 1e-11*std::max(1.0, m*g*g*0.03*0.03))
+                << "e.dat row " << n << " column " << k;
+        }
     }
-    std::ifstream is(c.dir.path/"postProcessing/fall/0/fall.dat");
-    std::string line;
-    std::getline(is, line);
-    EXPECT_EQ(line, "# time a:x a:y a:rotation a:Ux a:Uy");
 }
 
 
@@ -430,7 +470,13 @@ TEST(functionObject, folderIsNamedAfterTheStartTime)
     const nm::Time later(nm::caseFolder(c.dir.path), opts);
     auto list = nm::functionObjectList(later, *c.model);
     list.start();
-    EXPECT_TRUE(std::filesystem::exists(c.dir.path/"postProcessing/e/0.5/e.dat"));
+    const auto file = c.dir.path/"postProcessing/e/0.5/e.dat";
+    EXPECT_EQ(headerOf(file), "# time kinetic strain contact work total");
+    // One row, of the start: nothing has moved and no load has worked
+    const auto rows = rowsOf(file);
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(rows[0], std::vector<double>({c.model->time(), 0, 0, 0, 0, 0}));
+    EXPECT_FALSE(std::filesystem::exists(c.dir.path/"postProcessing/e/0"));
 }
 
 

@@ -7,9 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
+using nmm::block;
 using nmm::blockGeometry;
 using nmm::dictionary;
 using nmm::IOerror;
@@ -258,7 +263,26 @@ TEST(geometryBadInput, touchingBlocksAreNotOverlaps)
             plug { material rock; polygon ((11 1) (13 1) (13 3) (11 3)); } // fills the hole
             side { material rock; polygon ((14 1) (15 1) (15 2) (14 2)); } // inside an edge
         );)";
-    EXPECT_NO_THROW(blockGeometry::read(dictionary::parse(text, "touching")));
+    // Read as given: every block, vertex for vertex (a reader that merged
+    // touching blocks, dropped one or moved a vertex onto a neighbour's
+    // edge would change these areas or vertex counts)
+    const blockGeometry g = blockGeometry::read(dictionary::parse(text, "touching"));
+    const std::vector<std::tuple<std::string, std::size_t, double>> expected
+    {
+        {"a", 4, 2}, {"b", 4, 1}, {"c", 5, 1}, {"d", 4, 1},
+        {"e", 5, 1.25}, {"f", 5, 0.75}, {"ring", 4, 12}, {"plug", 4, 4}, {"side", 4, 1}
+    };
+    ASSERT_EQ(g.nBlocks(), expected.size());
+    for (std::size_t b = 0; b < expected.size(); ++b)
+    {
+        const auto& [name, nVertices, area] = expected[b];
+        EXPECT_EQ(g.blocks()[b].name(), name);
+        EXPECT_EQ(g.blocks()[b].outer().size(), nVertices) << name;
+        EXPECT_DOUBLE_EQ(g.blocks()[b].area(), area) << name;
+    }
+    EXPECT_EQ(g.nHoles(), 1u);
+    EXPECT_EQ(g.blocks()[g.findBlock("ring")].nHoles(), 1u);
+    EXPECT_DOUBLE_EQ(g.area(), 24);
 }
 
 
@@ -275,15 +299,34 @@ TEST(geometryBadInput, overlapIsDecidedExactly)
                + snap;
     };
     const std::string exactly = " snapTolerance 0;";
-    EXPECT_NO_THROW(blockGeometry::read(dictionary::parse(pair("0.3", exactly), "t")));
-    EXPECT_NO_THROW(blockGeometry::read(dictionary::parse(pair("0.30000000000000005", exactly), "t")));
+    // Accepted as given: b's left side stays where it was written, not
+    // snapped onto a's right side
+    for (const double x : {0.3, 0.30000000000000005})
+    {
+        std::ostringstream text;
+        text << std::setprecision(17) << x;
+        const blockGeometry g =
+            blockGeometry::read(dictionary::parse(pair(text.str(), exactly), "t"));
+        ASSERT_EQ(g.nBlocks(), 2u) << text.str();
+        const block& b = g.blocks()[1];
+        double left = 1;
+        for (const auto& v : b.outer()) left = std::min(left, v.x());
+        EXPECT_EQ(left, x) << text.str();
+        EXPECT_EQ(g.blocks()[0].outer().size(), 4u);
+        EXPECT_EQ(b.outer().size(), 4u);
+    }
     EXPECT_THROW(blockGeometry::read(dictionary::parse(pair("0.29999999999999993", exactly), "t")), IOerror);
     EXPECT_NO_THROW(blockGeometry::read(dictionary::parse(pair("0.29999999999999993", ""), "t")));
 
     // A vertex on an inclined edge: exactly on it (a T-junction) or not
     const std::string tri = "a { material rock; polygon ((0 0) (4 0) (0 4)); }";
-    EXPECT_NO_THROW(blockGeometry::read(dictionary::parse(
-        "blocks ( " + tri + " b { material rock; polygon ((4 0) (4 4) (2 2)); } );" + exactly, "t")));
+    const blockGeometry t = blockGeometry::read(dictionary::parse(
+        "blocks ( " + tri + " b { material rock; polygon ((4 0) (4 4) (2 2)); } );" + exactly, "t"));
+    ASSERT_EQ(t.nBlocks(), 2u);
+    EXPECT_DOUBLE_EQ(t.blocks()[0].area(), 8);
+    EXPECT_DOUBLE_EQ(t.blocks()[1].area(), 4);
+    EXPECT_EQ(t.blocks()[1].side(Eigen::Vector2d(2, 2)), nmm::exact::side::boundary);
+    EXPECT_EQ(t.blocks()[0].side(Eigen::Vector2d(2, 2)), nmm::exact::side::boundary);
     EXPECT_THROW(blockGeometry::read(dictionary::parse(
         "blocks ( " + tri + " b { material rock; polygon ((4 0) (4 4) (1.9999999999999998 2)); } );"
         + exactly, "t")), IOerror);

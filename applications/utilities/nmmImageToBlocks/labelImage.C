@@ -4,12 +4,16 @@
 #include <png.h>
 #include <tiffio.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <csetjmp>
 #include <cstdarg>
 #include <cstdio>
 #include <cstring>
+#include <iomanip>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 
 namespace fs = std::filesystem;
@@ -17,16 +21,38 @@ namespace fs = std::filesystem;
 namespace
 {
 
+//- Refuse from the header what would not fit: decoding takes about
+//  nmm::bytesPerPixel a pixel
+void checkSize(std::uint64_t width, std::uint64_t height, std::uint64_t maxPixels)
+{
+    const std::uint64_t n = width*height;
+    if (n <= maxPixels) return;
+    std::ostringstream os;
+    os << "the image is " << width << " x " << height << " = " << n
+       << " pixels, more than maxPixels " << maxPixels << ". Reading it would take about "
+       << std::setprecision(2) << double(n)*nmm::bytesPerPixel/double(1ull << 30)
+       << " GB of memory; raise maxPixels if the machine has it, or crop or "
+          "downsample the image";
+    throw nmm::imageTooLarge(os.str());
+}
+
+
 // * * * * * * * * * * * * * * * * PNG  * * * * * * * * * * * * * * * * * //
 
-//- libpng reports an error by longjmp; its message is kept here
+//- libpng reports an error by longjmp; its message is kept here. The
+//  file is read through onRead, which knows where a short file ends
 struct pngReader
 {
     png_structp png = nullptr;
     png_infop info = nullptr;
     char message[256] = "";
+    std::FILE* file = nullptr;
+    std::uint64_t position = 0;
 
-    pngReader()
+    explicit pngReader(std::FILE* f, std::uint64_t start)
+    :
+        file(f),
+        position(start)
     {
         png = png_create_read_struct(PNG_LIBPNG_VER_STRING, this, onError, onWarning);
         if (png) info = png_create_info_struct(png);
@@ -47,6 +73,20 @@ struct pngReader
         png_longjmp(png, 1);
     }
     static void onWarning(png_structp, png_const_charp) {}
+
+    static void onRead(png_structp png, png_bytep data, png_size_t length)
+    {
+        auto* self = static_cast<pngReader*>(png_get_io_ptr(png));
+        const std::size_t got = std::fread(data, 1, length, self->file);
+        self->position += got;
+        if (got == length) return;
+        char text[160];
+        std::snprintf(text, sizeof text, std::ferror(self->file)
+            ? "read error after %llu bytes" : "the file is cut short: it ends after %llu "
+            "bytes, inside the image data (an incomplete copy or download?)",
+            static_cast<unsigned long long>(self->position));
+        png_error(png, text);
+    }
 };
 
 
@@ -60,10 +100,10 @@ struct pngLayout
 // The two functions that call into libpng hold no object with a
 // destructor: a longjmp out of libpng must not skip one.
 
-bool pngReadHeader(pngReader& r, std::FILE* f, pngLayout& layout)
+bool pngReadHeader(pngReader& r, pngLayout& layout)
 {
     if (setjmp(png_jmpbuf(r.png))) return false;
-    png_init_io(r.png, f);
+    png_set_read_fn(r.png, &r, pngReader::onRead);
     png_set_sig_bytes(r.png, 8);
     png_read_info(r.png, r.info);
     layout.width = png_get_image_width(r.png, r.info);
@@ -125,18 +165,22 @@ std::string pngColourName(int colourType)
 }
 
 
-nmm::labelImage readPng(std::FILE* f, bool greyOnly)
+nmm::labelImage readPng(std::FILE* f, bool greyOnly, std::uint64_t maxPixels)
 {
-    pngReader r;
+    pngReader r(f, 8);
     pngLayout layout;
-    if (!pngReadHeader(r, f, layout))
+    if (!pngReadHeader(r, layout))
     {
         throw std::runtime_error(std::string("libpng: ") + r.message);
     }
-    if (greyOnly && layout.colourType != PNG_COLOR_TYPE_GRAY)
+    checkSize(layout.width, layout.height, maxPixels);
+    // A palette image's indices are labels (label images are saved with
+    // a colour table that way); its colours are not
+    const bool palette = layout.colourType == PNG_COLOR_TYPE_PALETTE;
+    if (greyOnly && layout.colourType != PNG_COLOR_TYPE_GRAY && !palette)
     {
         throw std::runtime_error("a label image must be one grey channel (8 or 16 "
-            "bits); this PNG is " + pngColourName(layout.colourType));
+            "bits) or palette indices; this PNG is " + pngColourName(layout.colourType));
     }
     std::vector<png_byte> data;
     std::vector<png_bytep> rows;
@@ -151,7 +195,8 @@ nmm::labelImage readPng(std::FILE* f, bool greyOnly)
     image.nCols = int(layout.width);
     image.maxValue = bitDepth == 16 ? 0xffffu : (1u << bitDepth) - 1;
     image.format = std::to_string(layout.bitDepth) + "-bit "
-        + pngColourName(layout.colourType) + " PNG";
+        + pngColourName(layout.colourType) + " PNG"
+        + (greyOnly && palette ? " (palette indices as labels)" : "");
     image.values.resize(std::size_t(image.nRows)*std::size_t(image.nCols));
     std::size_t k = 0;
     for (const png_bytep row : rows)
@@ -256,7 +301,7 @@ void readTiffTiles(TIFF* t, int bits, nmm::labelImage& image)
 }
 
 
-nmm::labelImage readTiff(const fs::path& file, bool greyOnly)
+nmm::labelImage readTiff(const fs::path& file, bool greyOnly, std::uint64_t maxPixels)
 {
     tiffMessage[0] = 0;
     TIFFSetErrorHandler(onTiffError);
@@ -273,6 +318,7 @@ nmm::labelImage readTiff(const fs::path& file, bool greyOnly)
     {
         throw tiffFailure("no image size");
     }
+    checkSize(width, height, maxPixels);
     TIFFGetFieldDefaulted(t, TIFFTAG_BITSPERSAMPLE, &bits);
     TIFFGetFieldDefaulted(t, TIFFTAG_SAMPLESPERPIXEL, &samples);
     TIFFGetFieldDefaulted(t, TIFFTAG_SAMPLEFORMAT, &sampleFormat);
@@ -322,10 +368,59 @@ bool isTiff(const unsigned char* m)
         || (m[0] == 'M' && m[1] == 'M' && m[2] == 0 && (m[3] == 42 || m[3] == 43));
 }
 
+
+bool startsWith(const std::string& head, const char* magic, std::size_t n)
+{
+    return head.size() >= n && head.compare(0, n, magic, n) == 0;
+}
+
+
+//- What a file that is neither PNG nor TIFF seems to be, from its first
+//  bytes: the formats an image may have been saved in by mistake
+std::string whatItIs(const std::string& head)
+{
+    struct signature { const char* magic; std::size_t n; const char* name; };
+    static const signature known[] =
+    {
+        {"\xff\xd8\xff", 3, "a JPEG image"},
+        {"GIF87a", 6, "a GIF image"},
+        {"GIF89a", 6, "a GIF image"},
+        {"BM", 2, "a BMP image"},
+        {"\0\0\0\x0cjP  ", 8, "a JPEG 2000 image"},
+        {"\x1f\x8b", 2, "gzip-compressed"},
+        {"PK\x03\x04", 4, "a ZIP archive"},
+        {"%PDF", 4, "a PDF document"},
+    };
+    for (const auto& k : known)
+    {
+        if (startsWith(head, k.magic, k.n)) return k.name;
+    }
+    if (startsWith(head, "RIFF", 4) && head.size() >= 12 && head.compare(8, 4, "WEBP") == 0)
+    {
+        return "a WebP image";
+    }
+    if (head.size() >= 3 && head[0] == 'P' && head[1] >= '1' && head[1] <= '7'
+     && std::isspace(static_cast<unsigned char>(head[2])))
+    {
+        return "a PNM (PBM/PGM/PPM) image";
+    }
+    const bool text = std::all_of(head.begin(), head.end(), [](char c)
+    {
+        const auto u = static_cast<unsigned char>(c);
+        return u >= 0x20 ? u != 0x7f : (u == '\t' || u == '\n' || u == '\r');
+    });
+    return text ? "text" : "";
+}
+
 } // End anonymous namespace
 
 
-nmm::labelImage nmm::readLabelImage(const fs::path& file, bool greyOnly)
+nmm::labelImage nmm::readLabelImage
+(
+    const fs::path& file,
+    bool greyOnly,
+    std::uint64_t maxPixels
+)
 {
     if (fs::is_directory(file)) throw std::runtime_error("it is a folder");
     const std::unique_ptr<std::FILE, fileCloser> f(std::fopen(file.c_str(), "rb"));
@@ -336,11 +431,20 @@ nmm::labelImage nmm::readLabelImage(const fs::path& file, bool greyOnly)
     const std::size_t n = std::fread(magic, 1, sizeof magic, f.get());
     if (n == sizeof magic && png_sig_cmp(magic, 0, sizeof magic) == 0)
     {
-        return readPng(f.get(), greyOnly);
+        return readPng(f.get(), greyOnly, maxPixels);
     }
     if (n >= 4 && isTiff(magic))
     {
-        return readTiff(file, greyOnly);
+        return readTiff(file, greyOnly, maxPixels);
     }
-    throw std::runtime_error(n == 0 ? "the file is empty" : "not a PNG or TIFF file");
+    if (n == 0) throw std::runtime_error("the file is empty");
+
+    std::string head(reinterpret_cast<const char*>(magic), n);
+    char more[248];
+    head.append(more, std::fread(more, 1, sizeof more, f.get()));
+    const std::string what = whatItIs(head);
+    throw std::runtime_error("not a PNG or TIFF file"
+        + (what.empty() ? std::string() : ": by its content it is " + what
+            + " (save the image as PNG or TIFF, without lossy compression: "
+              "labels must stay exact)"));
 }

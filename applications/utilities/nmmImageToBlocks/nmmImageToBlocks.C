@@ -12,8 +12,10 @@ Description
         blocks ( #include "<constant>/geometry/grains" );
 
     The image is a label image (one integer per grain, 0 = pore), or a
-    binary image (grains light on dark); PNG (grey, 1 to 16 bits) or
-    TIFF (one unsigned integer sample, 1 to 32 bits). Pixel (row, col)
+    binary image (grains light on dark); PNG (grey, 1 to 16 bits, or
+    palette indices) or TIFF (one unsigned integer sample, 1 to 32
+    bits). An image of more than maxPixels pixels is refused from its
+    header, before it is decoded. Pixel (row, col)
     spans x = col*pixelSize to (col + 1)*pixelSize and, row 0 being the
     top of the picture, y = (nRows - row - 1)*pixelSize to
     (nRows - row)*pixelSize: the picture stands upright in the solver.
@@ -94,7 +96,8 @@ const nmm::keywordTable& keywords()
     {
         nmm::keywordTable t("nmmImageToBlocksDict", "blocks from a segmented image of grains");
         t.string("image", "the image, relative to the case folder: PNG (grey, "
-            "1-16 bit) or TIFF (one unsigned integer sample, 1-32 bit)").required();
+            "1-16 bit, or palette indices) or TIFF (one unsigned integer sample, "
+            "1-32 bit)").required();
         t.word("type", "label: one integer per grain, 0 = pore; binary: grains "
             "are the 4-connected regions of light pixels (above half the range)")
             .required().choices({"label", "binary"});
@@ -110,6 +113,10 @@ const nmm::keywordTable& keywords()
         t.word("material", "material of every block").required();
         t.word("output", "name of the block list under constant/geometry")
             .defaultValue("grains");
+        t.integer("maxPixels", "larger images are refused from their header, before "
+            "decoding (about 28 bytes of memory a pixel: the default, 10,000 x "
+            "10,000, takes about 2.6 GB)")
+            .defaultValue("100000000").range(1, 2147483647);
         return t;
     }();
     return table;
@@ -126,6 +133,7 @@ struct settings
     bool dropBorderGrains = false;
     std::string material;
     std::string output;
+    std::uint64_t maxPixels = 0;
 };
 
 settings readSettings(const nmm::dictionary& dict, const fs::path& casePath)
@@ -140,6 +148,7 @@ settings readSettings(const nmm::dictionary& dict, const fs::path& casePath)
     s.dropBorderGrains = k.get<bool>(dict, "dropBorderGrains");
     s.material = k.get<std::string>(dict, "material");
     s.output = k.get<std::string>(dict, "output");
+    s.maxPixels = std::uint64_t(k.get<long long>(dict, "maxPixels"));
     return s;
 }
 
@@ -168,14 +177,19 @@ std::string countAndNames(const std::vector<std::string>& names)
 
 nmm::labelImage readImage(const settings& s, const nmm::dictionary& dict)
 {
+    const std::string what = "cannot read the image \"" + s.image.string() + "\": ";
     try
     {
-        return nmm::readLabelImage(s.image, !s.binary);
+        return nmm::readLabelImage(s.image, !s.binary, s.maxPixels);
+    }
+    catch (const nmm::imageTooLarge& e)
+    {
+        const char* key = dict.findEntry("maxPixels") ? "maxPixels" : "image";
+        throw dict.lookupEntry(key).error(what + e.what());
     }
     catch (const std::runtime_error& e)
     {
-        throw dict.lookupEntry("image").error("cannot read the image \""
-            + s.image.string() + "\": " + e.what());
+        throw dict.lookupEntry("image").error(what + e.what());
     }
 }
 

@@ -39,6 +39,8 @@ struct frameBuilder
     std::map<pointKey, std::int64_t> pointIds;
     std::vector<Eigen::Vector2d> pointD, pointU;
     std::vector<vtkSymmTensor> pointSigma;
+    //- A point lies in one block: its element's
+    std::vector<std::int32_t> pointBlock;
     std::vector<int> pointCount;
     //- Reference position and the patches of each point
     std::vector<Eigen::Vector2d> pointX;
@@ -81,6 +83,7 @@ struct frameBuilder
             mesh.addPoint(Eigen::Vector2d(X + d));
             pointD.push_back(d);
             pointU.push_back(u);
+            pointBlock.push_back(std::int32_t(e.block));
             pointSigma.push_back(vtkSymmTensor::Zero());
             pointCount.push_back(0);
             pointX.push_back(X);
@@ -98,6 +101,13 @@ vtkSymmTensor paraviewOrder(const Eigen::Vector4d& s)
     vtkSymmTensor t;
     t << s[0], s[1], s[3], s[2], 0, 0;
     return t;
+}
+
+
+//- Back to the model's order (xx yy xy zz)
+Eigen::Vector4d modelOrder(const vtkSymmTensor& t)
+{
+    return Eigen::Vector4d(t[0], t[1], t[3], t[2]);
 }
 
 
@@ -164,6 +174,27 @@ void addCellData(vtkPolygonMesh& mesh, const nmmSolidModel& model,
     mesh.addCellData(vtkDataArray::scalar(f::principalStressMin, sMin));
     mesh.addCellData(vtkDataArray::int32(f::blockId, blockId));
     mesh.addCellData(vtkDataArray::int32(f::materialId, materialId));
+}
+
+
+//- sigmaEq and the principal stresses of the recovered point stresses
+void addInvariants(vtkPolygonMesh& mesh, const std::vector<vtkSymmTensor>& sigma)
+{
+    std::vector<double> eq, sMax, sMid, sMin;
+    for (const vtkSymmTensor& t : sigma)
+    {
+        const Eigen::Vector4d s = modelOrder(t);
+        eq.push_back(vonMises(s));
+        const Eigen::Vector3d p = principal(s);
+        sMax.push_back(p[0]);
+        sMid.push_back(p[1]);
+        sMin.push_back(p[2]);
+    }
+    namespace f = vtkFieldNames;
+    mesh.addPointData(vtkDataArray::scalar(f::equivalentStress, eq));
+    mesh.addPointData(vtkDataArray::scalar(f::principalStressMax, sMax));
+    mesh.addPointData(vtkDataArray::scalar(f::principalStressMid, sMid));
+    mesh.addPointData(vtkDataArray::scalar(f::principalStressMin, sMin));
 }
 
 
@@ -253,7 +284,6 @@ vtkPolygonMesh solidOutput::frame(const nmmSolidModel& model)
 {
     frameBuilder b(model);
     const auto& els = model.elements().elements();
-    std::vector<std::int32_t> pointBlock;
     for (std::size_t e = 0; e < els.size(); ++e)
     {
         const auto T0 = model.space().referenceTriangle(label(e));
@@ -276,6 +306,15 @@ vtkPolygonMesh solidOutput::frame(const nmmSolidModel& model)
     b.mesh.addPointData(vtkDataArray::vector(f::displacement, b.pointD));
     b.mesh.addPointData(vtkDataArray::vector(f::velocity, b.pointU));
     b.mesh.addPointData(vtkDataArray::symmTensor(f::stress, b.pointSigma));
+    addInvariants(b.mesh, b.pointSigma);
+    std::vector<std::int32_t> pointMaterial;
+    pointMaterial.reserve(b.pointBlock.size());
+    for (const std::int32_t block : b.pointBlock)
+    {
+        pointMaterial.push_back(std::int32_t(model.materialOfBlock(block)));
+    }
+    b.mesh.addPointData(vtkDataArray::int32(f::blockId, b.pointBlock));
+    b.mesh.addPointData(vtkDataArray::int32(f::materialId, pointMaterial));
     return std::move(b.mesh);
 }
 
