@@ -74,7 +74,9 @@ const std::vector<std::string>& dictionaryParser::directiveNames()
 dictionaryParser::dictionaryParser(readOptions opts)
 :
     opts_(std::move(opts)),
-    etcDirs_(opts_.etcDirs)
+    etcDirs_(opts_.etcDirs),
+    budget_(std::make_shared<expansionBudget>(opts_.maxExpansionBytes,
+        opts_.maxIncludes))
 {
     if (const char* nmmDir = std::getenv("NMM_PROJECT_DIR"))
     {
@@ -260,6 +262,7 @@ void dictionaryParser::parseEntry
             if (e && e->isDict())
             {
                 e->markUsedAsMacro();
+                budget_->charge(e->dict(), t.where, "$" + t.text);
                 addEntry(d, std::make_unique<entry>(key.text, e->dict().clone(),
                     key.where, key.isString()), mode);
                 return;
@@ -579,9 +582,14 @@ tokenList dictionaryParser::expandVariable(const token& var, const dictionary& d
     if (const entry* e = d.findScoped(name))
     {
         e->markUsedAsMacro();
-        if (!e->isDict()) return e->stream();
+        if (!e->isDict())
+        {
+            budget_->charge(e->stream(), var.where, "$" + var.text);
+            return e->stream();
+        }
         // A dictionary inside a value gives its entries' tokens, without
         // braces, as in OpenFOAM ("( { $base; name a; } )")
+        budget_->charge(e->dict(), var.where, "$" + var.text);
         std::ostringstream os;
         e->dict().write(os, 0);
         t = tokenize(os.str(), var.where.fileName());
@@ -657,6 +665,7 @@ void dictionaryParser::substituteKeyword
             "$" + var.text);
     }
     e->markUsedAsMacro();
+    budget_->charge(e->dict(), var.where, "$" + var.text);
     // Copy first: the source may be d itself or one of its parents
     const auto copy = e->dict().clone();
     const bool merge = mode_ == inputMode::merge || mode_ == inputMode::overwrite;
@@ -739,6 +748,7 @@ std::string dictionaryParser::variableText
     if (const entry* e = d.findScoped(name); e && !e->isDict())
     {
         e->markUsedAsMacro();
+        budget_->charge(e->stream(), where, "$" + name);
         std::ostringstream os;
         for (std::size_t k = 0; k < e->stream().size(); ++k)
         {
@@ -967,23 +977,50 @@ bool dictionaryParser::openInclude
         throw IOerror(msg, arg.where, name);
     }
 
+    inc.again = enterInclude(target, arg, name);
+    inc.file = internFileName(target.string());
+    return true;
+}
+
+
+bool dictionaryParser::enterInclude
+(
+    const fs::path& file,
+    const token& arg,
+    const std::string& directive
+)
+{
     std::error_code ec;
-    const fs::path canonical = fs::weakly_canonical(target, ec);
+    const fs::path canonical = fs::weakly_canonical(file, ec);
     if (std::find(includeStack_.begin(), includeStack_.end(), canonical)
         != includeStack_.end())
     {
         std::string chain;
         for (const auto& p : includeStack_) chain += p.string() + " -> ";
-        throw IOerror("include cycle: " + chain + canonical.string(), arg.where, name);
+        throw IOerror("include cycle: " + chain + canonical.string(), arg.where,
+            directive);
     }
     if (includeStack_.size() >= maxIncludeDepth)
     {
         throw IOerror("includes nested more than "
-            + std::to_string(maxIncludeDepth) + " deep", arg.where, name);
+            + std::to_string(maxIncludeDepth) + " deep", arg.where, directive);
     }
+    const bool again = budget_->includeAgain(canonical, arg.where, directive);
     includeStack_.push_back(canonical);
-    inc.file = internFileName(target.string());
-    return true;
+    return again;
+}
+
+
+void dictionaryParser::chargeAgain
+(
+    const includedFile& inc,
+    const dictionaryLexer& sub,
+    const token& dir
+) const
+{
+    if (!inc.again) return;
+    budget_->charge(inc.text.size() + sub.tokensLexed()*sizeof(token),
+        dir.where, dir.text);
 }
 
 
@@ -992,8 +1029,10 @@ void dictionaryParser::includeFile(dictionaryLexer& lx, dictionary& d, const tok
     includedFile inc;
     if (!openInclude(lx, d, dir, inc)) return;
     ++includeDepth_;
-    parseSource(inc.text, inc.file, d);
+    dictionaryLexer sub(inc.text, inc.file);
+    parseEntries(sub, d, nullptr);
     --includeDepth_;
+    chargeAgain(inc, sub, dir);
     includeStack_.pop_back();
 }
 
@@ -1033,6 +1072,7 @@ void dictionaryParser::includeTokens
             value.push_back(std::move(t));
         }
     }
+    chargeAgain(inc, sub, dir);
     includeStack_.pop_back();
 }
 
@@ -1178,13 +1218,23 @@ void dictionaryParser::includeFunc(dictionaryLexer& lx, dictionary& d, const tok
     }
     const functionCall call = splitFunctionCall(arg.text);
 
+    // The template is read by a reader of its own (its header stays, its
+    // case is its own), which shares this read's include chain and budget:
+    // a template that calls itself is an include cycle
+    const fs::path file = functionTemplate(call.name, arg, dir);
+    const bool again = enterInclude(file, arg, dir.text);
     readOptions sub = opts_;
     sub.etcDirs = etcDirs_;
-    dictionary funcs =
-        dictionaryParser(sub).parseFile(functionTemplate(call.name, arg, dir));
+    dictionaryParser reader(sub);
+    reader.budget_ = budget_;
+    reader.includeStack_ = includeStack_;
+    reader.includeStack_.pop_back();   // parseFile puts the template back
+    dictionary funcs = reader.parseFile(file);
+    includeStack_.pop_back();
     funcs.remove("FoamFile");
     std::unique_ptr<dictionary> func = funcs.isDict(call.name)
         ? funcs.subDict(call.name).clone() : funcs.clone();
+    if (again) budget_->charge(*func, arg.where, dir.text);
     setFunctionArguments(*func, call, arg, dir);
 
     // The keyword is the call with the characters a word may not hold removed
