@@ -326,6 +326,38 @@ TEST(dictionary, includeInAValueMustBeBalanced)
 }
 
 
+// As in OpenFOAM v1912 (tests/conformance/tricky/includeInValue): a file
+// included in a value is read as one value, up to its first ';' outside
+// brackets, which is dropped
+TEST(dictionary, includeInAValueEndsAtItsFirstSemicolon)
+{
+    tempDir dir("nmmDictTest");
+    dir.write("value", "value 7;   // the end of the value\n");
+    dir.write("items", "g1 { material rock; } g2 { material rock; }\n");
+    dir.write("more", "x 1;\ny (2 3);\n");
+    const auto file = dir.write("lists",
+        "blocks ( #include \"value\" );\n"
+        "w #include \"value\";\n"
+        "grains ( #include \"items\" );\n"
+        "read ( a 1; b 2; );\n");
+    const dictionary d = dictionary::read(file);
+    EXPECT_EQ(nmm::tokensToString(d.lookup("blocks")), "(value 7)");
+    EXPECT_EQ(nmm::tokensToString(d.lookup("w")), "value 7");
+    EXPECT_EQ(dictionary::entryList(d.lookupEntry("grains")).size(), 2u);
+    // Read directly, a ';' in a list is one of its tokens, in OpenFOAM too
+    EXPECT_EQ(nmm::tokensToString(d.lookup("read")), "(a 1; b 2;)");
+
+    // What OpenFOAM would silently drop is an error, in the included file
+    const auto rest = dir.write("rest", "blocks ( #include \"more\" );\n");
+    const IOerror err = nmm::test::errorOf([&] { dictionary::read(rest); });
+    EXPECT_EQ(err.keyword(), "blocks");
+    EXPECT_EQ(err.where().line, 2);
+    EXPECT_EQ(err.where().column, 1);
+    EXPECT_NE(err.where().fileName().find("more"), std::string::npos);
+    EXPECT_NE(err.message().find("first ';'"), std::string::npos) << err.message();
+}
+
+
 TEST(dictionary, valueStartingWithABraceIsAnError)
 {
     // Written back it would read as a dictionary

@@ -412,9 +412,8 @@ tokenList dictionaryParser::readValue
             if (isIncludeDirective(t.text))
             {
                 const std::size_t first = value.size();
-                includeTokens(lx, d, t, value);
+                includeTokens(lx, d, t, key, value);
                 requireBalanced(value, first, t, key);
-                if (open.empty()) rejectLooseEntries(value, first, t, key);
             }
             else
             {
@@ -463,33 +462,6 @@ void dictionaryParser::requireBalanced
             + open.back()->text + "' unclosed (opened at line "
             + std::to_string(open.back()->where.line) + " of that file)",
             dir.where, key.text);
-    }
-}
-
-
-void dictionaryParser::rejectLooseEntries
-(
-    const tokenList& value,
-    std::size_t first,
-    const token& dir,
-    const token& key
-) const
-{
-    // Entries ("a 1; b 2;") spliced loose into a value could never be
-    // written back; inside ( ) or { } they are list items
-    int depth = 0;
-    for (std::size_t i = first; i < value.size(); ++i)
-    {
-        const token& t = value[i];
-        if (t.isPunct('(') || t.isPunct('{')) ++depth;
-        else if (t.isPunct(')') || t.isPunct('}')) --depth;
-        else if (t.isPunct(';') && depth <= 0)
-        {
-            throw IOerror("the file included by " + dir.text + " holds entries "
-                "(found ';' at " + t.where.str() + "): inside the value of '"
-                + key.text + "' include it only within ( ) or { }", dir.where,
-                key.text);
-        }
     }
 }
 
@@ -1042,17 +1014,30 @@ void dictionaryParser::includeTokens
     dictionaryLexer& lx,
     dictionary& d,
     const token& dir,
+    const token& key,
     tokenList& value
 )
 {
     // Inside a value (e.g. a list of blocks) the file's tokens are spliced
-    // in, with its macros and directives resolved
+    // in, with its macros and directives resolved. As in OpenFOAM the file
+    // is read as one value: its first ';' outside brackets ends it and is
+    // dropped ("blocks ( #include "f" );" with f "value 7;" gives
+    // "( value 7 )")
     includedFile inc;
     if (!openInclude(lx, d, dir, inc)) return;
     dictionaryLexer sub(inc.text, inc.file);
+    int depth = 0;
     token t;
     while (sub.next(t))
     {
+        if (t.isPunct(';') && depth == 0)
+        {
+            rejectAfterValueEnd(sub, t, dir, key);
+            break;
+        }
+        if (t.isPunct('(') || t.isPunct('{')) ++depth;
+        else if (t.isPunct(')') || t.isPunct('}')) --depth;
+
         if (t.isVariable())
         {
             tokenList v = expandVariable(t, d);
@@ -1060,7 +1045,7 @@ void dictionaryParser::includeTokens
         }
         else if (t.isDirective())
         {
-            if (isIncludeDirective(t.text)) includeTokens(sub, d, t, value);
+            if (isIncludeDirective(t.text)) includeTokens(sub, d, t, key, value);
             else
             {
                 const tokenList r = evaluate(sub, d, t);
@@ -1074,6 +1059,25 @@ void dictionaryParser::includeTokens
     }
     chargeAgain(inc, sub, dir);
     includeStack_.pop_back();
+}
+
+
+void dictionaryParser::rejectAfterValueEnd
+(
+    dictionaryLexer& sub,
+    const token& end,
+    const token& dir,
+    const token& key
+) const
+{
+    // OpenFOAM silently ignores the rest of the file
+    token rest;
+    if (!sub.next(rest)) return;
+    throw IOerror(rest.describe() + " follows the ';' at line "
+        + std::to_string(end.where.line) + " that ends the value included by "
+        + dir.text + " into '" + key.text + "': a file included in a value is "
+        "read up to its first ';' (OpenFOAM ignores the rest); put the rest "
+        "inside ( ) or { } or in a file of its own", rest.where, key.text);
 }
 
 
