@@ -99,6 +99,10 @@ extern "C" int LLVMFuzzerInitialize(int*, char***)
     inputName = (system / "fuzzDict").string();
     options.etcDirs = {scratchDir / "etc"};
     options.caseDir = scratchDir;
+    // Exponential expansion is refused at the budget; a small one keeps
+    // each run of such an input short
+    options.maxExpansionBytes = std::size_t(4) << 20;
+    options.maxIncludes = 1000;
     std::atexit(removeScratch);
     return 0;
 }

@@ -4,6 +4,7 @@
 
 #include "nmmSolid/io/dictionary/dictionary.H"
 #include "nmmSolid/io/dictionary/dictionaryLexer.H"
+#include "nmmSolid/io/dictionary/expansionBudget.H"
 #include "testTools.H"
 
 #include <gtest/gtest.h>
@@ -325,6 +326,38 @@ TEST(dictionary, includeInAValueMustBeBalanced)
 }
 
 
+// As in OpenFOAM v1912 (tests/conformance/tricky/includeInValue): a file
+// included in a value is read as one value, up to its first ';' outside
+// brackets, which is dropped
+TEST(dictionary, includeInAValueEndsAtItsFirstSemicolon)
+{
+    tempDir dir("nmmDictTest");
+    dir.write("value", "value 7;   // the end of the value\n");
+    dir.write("items", "g1 { material rock; } g2 { material rock; }\n");
+    dir.write("more", "x 1;\ny (2 3);\n");
+    const auto file = dir.write("lists",
+        "blocks ( #include \"value\" );\n"
+        "w #include \"value\";\n"
+        "grains ( #include \"items\" );\n"
+        "read ( a 1; b 2; );\n");
+    const dictionary d = dictionary::read(file);
+    EXPECT_EQ(nmm::tokensToString(d.lookup("blocks")), "(value 7)");
+    EXPECT_EQ(nmm::tokensToString(d.lookup("w")), "value 7");
+    EXPECT_EQ(dictionary::entryList(d.lookupEntry("grains")).size(), 2u);
+    // Read directly, a ';' in a list is one of its tokens, in OpenFOAM too
+    EXPECT_EQ(nmm::tokensToString(d.lookup("read")), "(a 1; b 2;)");
+
+    // What OpenFOAM would silently drop is an error, in the included file
+    const auto rest = dir.write("rest", "blocks ( #include \"more\" );\n");
+    const IOerror err = nmm::test::errorOf([&] { dictionary::read(rest); });
+    EXPECT_EQ(err.keyword(), "blocks");
+    EXPECT_EQ(err.where().line, 2);
+    EXPECT_EQ(err.where().column, 1);
+    EXPECT_NE(err.where().fileName().find("more"), std::string::npos);
+    EXPECT_NE(err.message().find("first ';'"), std::string::npos) << err.message();
+}
+
+
 TEST(dictionary, valueStartingWithABraceIsAnError)
 {
     // Written back it would read as a dictionary
@@ -589,6 +622,197 @@ TEST(dictionary, deepNestingFailsCleanly)
     std::string expr = "a #eval \"";
     for (int i = 0; i < 5000; ++i) expr += "(";
     EXPECT_THROW(parse(expr + "1\";"), IOerror);
+}
+
+
+TEST(dictionary, expansionBudgetCountsBytesAndIncludes)
+{
+    nmm::expansionBudget budget(1000, 3);
+    const nmm::sourcePosition at{nmm::internFileName("f"), 3, 7};
+    budget.charge(999, at, "$a");
+    budget.charge(1, at, "$a");
+    const IOerror err = nmm::test::errorOf([&] { budget.charge(1, at, "$b"); });
+    EXPECT_EQ(err.keyword(), "$b");
+    EXPECT_EQ(err.where().line, 3);
+    EXPECT_EQ(err.where().column, 7);
+    EXPECT_NE(err.message().find("past 1000 bytes"), std::string::npos) << err.message();
+
+    // A file read the first time is input; read again it is charged
+    EXPECT_FALSE(budget.includeAgain("/a", at, "#include"));
+    EXPECT_TRUE(budget.includeAgain("/a", at, "#include"));
+    EXPECT_FALSE(budget.includeAgain("/b", at, "#include"));
+    EXPECT_THROW(budget.includeAgain("/c", at, "#include"), IOerror);
+
+    EXPECT_EQ(nmm::expansionBudget::cost(nmm::token::punct('(')), sizeof(nmm::token) + 1);
+}
+
+
+namespace
+{
+
+// Sixteen lines: first, then line for n = 1..15 with '@' standing for
+// n - 1 and '#' for n
+std::string repeatedLines(const std::string& first, const std::string& line)
+{
+    std::string text = first + "\n";
+    for (int n = 1; n <= 15; ++n)
+    {
+        std::string l = line;
+        for (std::size_t p; (p = l.find('@')) != std::string::npos;)
+        {
+            l.replace(p, 1, std::to_string(n - 1));
+        }
+        for (std::size_t p; (p = l.find('#')) != std::string::npos;)
+        {
+            l.replace(p, 1, std::to_string(n));
+        }
+        text += l + "\n";
+    }
+    return text;
+}
+
+nmm::readOptions smallBudget()
+{
+    nmm::readOptions opts;
+    opts.maxExpansionBytes = std::size_t(1) << 20;
+    opts.maxIncludes = 100;
+    return opts;
+}
+
+} // End anonymous namespace
+
+
+// Macros, dictionary copies and includes that repeat one another: each
+// file would expand to some 4^15 copies; the read must stop at the copy
+// that passes the budget, not exhaust the memory
+TEST(dictionary, exponentialMacroExpansionIsRefused)
+{
+    // a_n holds s_n = 4 s_(n-1) + 2 one-character tokens (73 bytes each):
+    // with the default 256 MiB the copies pass it at the first $a10 of
+    // a11 (line 12); with 1 MiB at the first $a6 of a7 (line 8)
+    const std::string macros =
+        repeatedLines("a0 1;", "a# ($a@ $a@ $a@ $a@);") + "x $a15;\n";
+    const IOerror err = errorOf(macros);
+    EXPECT_EQ(err.keyword(), "$a10");
+    EXPECT_EQ(err.where().line, 12);
+    EXPECT_EQ(err.where().column, 6);
+    EXPECT_NE(err.message().find("past 256 MiB"), std::string::npos) << err.message();
+    const IOerror small = nmm::test::errorOf([&]
+    {
+        dictionary::parse(macros, "test", smallBudget());
+    });
+    EXPECT_EQ(small.keyword(), "$a6");
+    EXPECT_EQ(small.where().line, 8);
+
+    for (const std::string& text :
+    {
+        // "key $dict;" copies
+        repeatedLines("d0 { x 1; y (1 2 3); }", "d# { a $d@; b $d@; c $d@; d $d@; }"),
+        // "$dict;" merges into sub-dictionaries
+        repeatedLines("d0 { x 1; y (1 2 3); }",
+            "d# { a { $d@; } b { $d@; } c { $d@; } d { $d@; } }"),
+        // dictionaries in values
+        repeatedLines("d0 { x 1; y (1 2 3); } v0 ( $d0 );", "v# ( $v@ $v@ $v@ $v@ );"),
+        repeatedLines("s0 { x 1; }", "s# { a ( { $s@; } { $s@; } { $s@; } { $s@; } ); }")
+    })
+    {
+        const IOerror e = nmm::test::errorOf([&]
+        {
+            dictionary::parse(text, "test", smallBudget());
+        });
+        EXPECT_NE(e.message().find("past 1 MiB"), std::string::npos)
+            << e.message() << "\nfor\n" << text.substr(0, 400);
+        EXPECT_EQ(e.keyword().substr(0, 1), "$") << text.substr(0, 400);
+    }
+
+    // #eval copies the text of its macros: x is 4001 tokens (292 KiB), so
+    // the fourth #eval (line 5) passes 1 MiB
+    std::string evals = "x 1";
+    for (int i = 0; i < 2000; ++i) evals += " + 1";
+    evals += ";\n";
+    for (int i = 0; i < 10; ++i) evals += "e" + std::to_string(i) + " #eval \"$x\";\n";
+    const IOerror e = nmm::test::errorOf([&]
+    {
+        dictionary::parse(evals, "test", smallBudget());
+    });
+    EXPECT_EQ(e.keyword(), "$x");
+    EXPECT_EQ(e.where().line, 5);
+    EXPECT_EQ(parse(evals).get<int>("e9"), 2001);
+}
+
+
+TEST(dictionary, repeatedIncludesAreRefusedPastTheBudget)
+{
+    tempDir dir("nmmDictTest");
+
+    // 4096 tokens "1" in 8 KiB of text: read again, each copy costs
+    // 8 KiB + 4096 sizeof(token), 296 KiB with 72-byte tokens, so that the
+    // fourth repetition (the fifth #include, line 7) passes 1 MiB
+    ASSERT_EQ(sizeof(nmm::token), 72u);
+    std::string ones;
+    for (int i = 0; i < 4096; ++i) ones += "1 ";
+    dir.write("ones", ones);
+    std::string list = "v\n(\n";
+    for (int i = 0; i < 6; ++i) list += "#include \"ones\"\n";
+    const auto values = dir.write("values", list + ");\n");
+    const IOerror err = nmm::test::errorOf([&]
+    {
+        dictionary::read(values, smallBudget());
+    });
+    EXPECT_EQ(err.keyword(), "#include");
+    EXPECT_EQ(err.where().line, 7);
+    EXPECT_NE(err.message().find("past 1 MiB"), std::string::npos) << err.message();
+    // The same at the level of entries
+    std::string entries;
+    for (int i = 0; i < 6; ++i) entries += "s" + std::to_string(i) + " { #include \"ones\" }\n";
+    dir.write("ones", "x (" + ones + ");\n");
+    const auto subDicts = dir.write("subDicts", entries);
+    const IOerror sub = nmm::test::errorOf([&]
+    {
+        dictionary::read(subDicts, smallBudget());
+    });
+    EXPECT_EQ(sub.where().line, 5);
+
+    // Includes of includes: 5 x 5 x 5 = 155 #include in all, past 100
+    for (int k = 1; k <= 2; ++k)
+    {
+        std::string text;
+        for (int i = 0; i < 5; ++i) text += "#include \"r" + std::to_string(k + 1) + "\"\n";
+        dir.write("r" + std::to_string(k), text);
+    }
+    dir.write("r3", "x 1;\n");
+    std::string top;
+    for (int i = 0; i < 5; ++i) top += "#include \"r1\"\n";
+    const auto tree = dir.write("tree", top);
+    const IOerror many = nmm::test::errorOf([&]
+    {
+        dictionary::read(tree, smallBudget());
+    });
+    EXPECT_NE(many.message().find("more than 100 times"), std::string::npos)
+        << many.message();
+    // with the default limit of 10000 the same tree is read
+    EXPECT_EQ(dictionary::read(tree).get<int>("x"), 1);
+
+    // A small file included a few times is read as before
+    const auto twice = dir.write("twice",
+        "a { #include \"r3\" }\nb ( #include \"r3\" );\n#include \"r3\"\n");
+    const dictionary d = dictionary::read(twice, smallBudget());
+    EXPECT_EQ(d.subDict("a").get<int>("x"), 1);
+    EXPECT_EQ(d.get<int>("x"), 1);
+}
+
+
+TEST(dictionary, includeFuncThatCallsItselfIsACycle)
+{
+    tempDir dir("nmmDictTest");
+    dir.write("system/loop", "loop { type none; }\n#includeFunc loop\n");
+    const auto control = dir.write("system/controlDict",
+        "functions\n{\n    #includeFunc loop\n}\n");
+    const IOerror err = nmm::test::errorOf([&] { dictionary::read(control); });
+    EXPECT_NE(err.message().find("include cycle"), std::string::npos) << err.message();
+    EXPECT_EQ(err.keyword(), "#includeFunc");
+    EXPECT_EQ(err.where().line, 2);
+    EXPECT_NE(err.where().fileName().find("loop"), std::string::npos);
 }
 
 

@@ -352,6 +352,7 @@ bool dictionaryLexer::next(token& t)
     }
     skipSpaceAndComments();
     if (atEof()) return false;
+    ++lexed_;
 
     t = token();
     t.where = here();

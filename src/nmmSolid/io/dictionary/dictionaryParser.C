@@ -74,7 +74,9 @@ const std::vector<std::string>& dictionaryParser::directiveNames()
 dictionaryParser::dictionaryParser(readOptions opts)
 :
     opts_(std::move(opts)),
-    etcDirs_(opts_.etcDirs)
+    etcDirs_(opts_.etcDirs),
+    budget_(std::make_shared<expansionBudget>(opts_.maxExpansionBytes,
+        opts_.maxIncludes))
 {
     if (const char* nmmDir = std::getenv("NMM_PROJECT_DIR"))
     {
@@ -260,6 +262,7 @@ void dictionaryParser::parseEntry
             if (e && e->isDict())
             {
                 e->markUsedAsMacro();
+                budget_->charge(e->dict(), t.where, "$" + t.text);
                 addEntry(d, std::make_unique<entry>(key.text, e->dict().clone(),
                     key.where, key.isString()), mode);
                 return;
@@ -409,9 +412,8 @@ tokenList dictionaryParser::readValue
             if (isIncludeDirective(t.text))
             {
                 const std::size_t first = value.size();
-                includeTokens(lx, d, t, value);
+                includeTokens(lx, d, t, key, value);
                 requireBalanced(value, first, t, key);
-                if (open.empty()) rejectLooseEntries(value, first, t, key);
             }
             else
             {
@@ -460,33 +462,6 @@ void dictionaryParser::requireBalanced
             + open.back()->text + "' unclosed (opened at line "
             + std::to_string(open.back()->where.line) + " of that file)",
             dir.where, key.text);
-    }
-}
-
-
-void dictionaryParser::rejectLooseEntries
-(
-    const tokenList& value,
-    std::size_t first,
-    const token& dir,
-    const token& key
-) const
-{
-    // Entries ("a 1; b 2;") spliced loose into a value could never be
-    // written back; inside ( ) or { } they are list items
-    int depth = 0;
-    for (std::size_t i = first; i < value.size(); ++i)
-    {
-        const token& t = value[i];
-        if (t.isPunct('(') || t.isPunct('{')) ++depth;
-        else if (t.isPunct(')') || t.isPunct('}')) --depth;
-        else if (t.isPunct(';') && depth <= 0)
-        {
-            throw IOerror("the file included by " + dir.text + " holds entries "
-                "(found ';' at " + t.where.str() + "): inside the value of '"
-                + key.text + "' include it only within ( ) or { }", dir.where,
-                key.text);
-        }
     }
 }
 
@@ -579,9 +554,14 @@ tokenList dictionaryParser::expandVariable(const token& var, const dictionary& d
     if (const entry* e = d.findScoped(name))
     {
         e->markUsedAsMacro();
-        if (!e->isDict()) return e->stream();
+        if (!e->isDict())
+        {
+            budget_->charge(e->stream(), var.where, "$" + var.text);
+            return e->stream();
+        }
         // A dictionary inside a value gives its entries' tokens, without
         // braces, as in OpenFOAM ("( { $base; name a; } )")
+        budget_->charge(e->dict(), var.where, "$" + var.text);
         std::ostringstream os;
         e->dict().write(os, 0);
         t = tokenize(os.str(), var.where.fileName());
@@ -657,6 +637,7 @@ void dictionaryParser::substituteKeyword
             "$" + var.text);
     }
     e->markUsedAsMacro();
+    budget_->charge(e->dict(), var.where, "$" + var.text);
     // Copy first: the source may be d itself or one of its parents
     const auto copy = e->dict().clone();
     const bool merge = mode_ == inputMode::merge || mode_ == inputMode::overwrite;
@@ -739,6 +720,7 @@ std::string dictionaryParser::variableText
     if (const entry* e = d.findScoped(name); e && !e->isDict())
     {
         e->markUsedAsMacro();
+        budget_->charge(e->stream(), where, "$" + name);
         std::ostringstream os;
         for (std::size_t k = 0; k < e->stream().size(); ++k)
         {
@@ -967,23 +949,50 @@ bool dictionaryParser::openInclude
         throw IOerror(msg, arg.where, name);
     }
 
+    inc.again = enterInclude(target, arg, name);
+    inc.file = internFileName(target.string());
+    return true;
+}
+
+
+bool dictionaryParser::enterInclude
+(
+    const fs::path& file,
+    const token& arg,
+    const std::string& directive
+)
+{
     std::error_code ec;
-    const fs::path canonical = fs::weakly_canonical(target, ec);
+    const fs::path canonical = fs::weakly_canonical(file, ec);
     if (std::find(includeStack_.begin(), includeStack_.end(), canonical)
         != includeStack_.end())
     {
         std::string chain;
         for (const auto& p : includeStack_) chain += p.string() + " -> ";
-        throw IOerror("include cycle: " + chain + canonical.string(), arg.where, name);
+        throw IOerror("include cycle: " + chain + canonical.string(), arg.where,
+            directive);
     }
     if (includeStack_.size() >= maxIncludeDepth)
     {
         throw IOerror("includes nested more than "
-            + std::to_string(maxIncludeDepth) + " deep", arg.where, name);
+            + std::to_string(maxIncludeDepth) + " deep", arg.where, directive);
     }
+    const bool again = budget_->includeAgain(canonical, arg.where, directive);
     includeStack_.push_back(canonical);
-    inc.file = internFileName(target.string());
-    return true;
+    return again;
+}
+
+
+void dictionaryParser::chargeAgain
+(
+    const includedFile& inc,
+    const dictionaryLexer& sub,
+    const token& dir
+) const
+{
+    if (!inc.again) return;
+    budget_->charge(inc.text.size() + sub.tokensLexed()*sizeof(token),
+        dir.where, dir.text);
 }
 
 
@@ -992,8 +1001,10 @@ void dictionaryParser::includeFile(dictionaryLexer& lx, dictionary& d, const tok
     includedFile inc;
     if (!openInclude(lx, d, dir, inc)) return;
     ++includeDepth_;
-    parseSource(inc.text, inc.file, d);
+    dictionaryLexer sub(inc.text, inc.file);
+    parseEntries(sub, d, nullptr);
     --includeDepth_;
+    chargeAgain(inc, sub, dir);
     includeStack_.pop_back();
 }
 
@@ -1003,17 +1014,30 @@ void dictionaryParser::includeTokens
     dictionaryLexer& lx,
     dictionary& d,
     const token& dir,
+    const token& key,
     tokenList& value
 )
 {
     // Inside a value (e.g. a list of blocks) the file's tokens are spliced
-    // in, with its macros and directives resolved
+    // in, with its macros and directives resolved. As in OpenFOAM the file
+    // is read as one value: its first ';' outside brackets ends it and is
+    // dropped ("blocks ( #include "f" );" with f "value 7;" gives
+    // "( value 7 )")
     includedFile inc;
     if (!openInclude(lx, d, dir, inc)) return;
     dictionaryLexer sub(inc.text, inc.file);
+    int depth = 0;
     token t;
     while (sub.next(t))
     {
+        if (t.isPunct(';') && depth == 0)
+        {
+            rejectAfterValueEnd(sub, t, dir, key);
+            break;
+        }
+        if (t.isPunct('(') || t.isPunct('{')) ++depth;
+        else if (t.isPunct(')') || t.isPunct('}')) --depth;
+
         if (t.isVariable())
         {
             tokenList v = expandVariable(t, d);
@@ -1021,7 +1045,7 @@ void dictionaryParser::includeTokens
         }
         else if (t.isDirective())
         {
-            if (isIncludeDirective(t.text)) includeTokens(sub, d, t, value);
+            if (isIncludeDirective(t.text)) includeTokens(sub, d, t, key, value);
             else
             {
                 const tokenList r = evaluate(sub, d, t);
@@ -1033,7 +1057,27 @@ void dictionaryParser::includeTokens
             value.push_back(std::move(t));
         }
     }
+    chargeAgain(inc, sub, dir);
     includeStack_.pop_back();
+}
+
+
+void dictionaryParser::rejectAfterValueEnd
+(
+    dictionaryLexer& sub,
+    const token& end,
+    const token& dir,
+    const token& key
+) const
+{
+    // OpenFOAM silently ignores the rest of the file
+    token rest;
+    if (!sub.next(rest)) return;
+    throw IOerror(rest.describe() + " follows the ';' at line "
+        + std::to_string(end.where.line) + " that ends the value included by "
+        + dir.text + " into '" + key.text + "': a file included in a value is "
+        "read up to its first ';' (OpenFOAM ignores the rest); put the rest "
+        "inside ( ) or { } or in a file of its own", rest.where, key.text);
 }
 
 
@@ -1178,13 +1222,23 @@ void dictionaryParser::includeFunc(dictionaryLexer& lx, dictionary& d, const tok
     }
     const functionCall call = splitFunctionCall(arg.text);
 
+    // The template is read by a reader of its own (its header stays, its
+    // case is its own), which shares this read's include chain and budget:
+    // a template that calls itself is an include cycle
+    const fs::path file = functionTemplate(call.name, arg, dir);
+    const bool again = enterInclude(file, arg, dir.text);
     readOptions sub = opts_;
     sub.etcDirs = etcDirs_;
-    dictionary funcs =
-        dictionaryParser(sub).parseFile(functionTemplate(call.name, arg, dir));
+    dictionaryParser reader(sub);
+    reader.budget_ = budget_;
+    reader.includeStack_ = includeStack_;
+    reader.includeStack_.pop_back();   // parseFile puts the template back
+    dictionary funcs = reader.parseFile(file);
+    includeStack_.pop_back();
     funcs.remove("FoamFile");
     std::unique_ptr<dictionary> func = funcs.isDict(call.name)
         ? funcs.subDict(call.name).clone() : funcs.clone();
+    if (again) budget_->charge(*func, arg.where, dir.text);
     setFunctionArguments(*func, call, arg, dir);
 
     // The keyword is the call with the characters a word may not hold removed
