@@ -1,8 +1,11 @@
 #include "nmmSolid/functionObjects/functionObject/functionObject.H"
 
+#include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/case/Time/Time.H"
 
+#include <cerrno>
 #include <iomanip>
+#include <system_error>
 #include <limits>
 
 namespace nmm
@@ -54,15 +57,26 @@ void functionObject::writeHeader(const std::vector<std::string>& columns)
 
 void functionObject::openFile()
 {
-    std::filesystem::create_directories(file_.parent_path());
+    std::error_code ec;
+    std::filesystem::create_directories(file_.parent_path(), ec);
+    if (ec) writeFailed(ec.value());
+    errno = 0;
     os_.open(file_, std::ios::out | std::ios::trunc);
-    if (!os_)
-    {
-        throw IOerror("cannot write " + file_.string(), {}, name_);
-    }
+    if (!os_) writeFailed(errno);
     os_ << '#';
     for (const auto& c : columns_) os_ << ' ' << c;
     os_ << std::endl;
+    if (!os_) writeFailed(errno);
+}
+
+
+void functionObject::writeFailed(int err) const
+{
+    throw fatalError
+    (
+        "function object '" + name_ + "': cannot write \"" + file_.string() + "\""
+      + (err ? ": " + std::generic_category().message(err) : std::string())
+    );
 }
 
 
@@ -78,8 +92,11 @@ void functionObject::writeRow(const std::vector<double>& values)
         first = false;
         os_ << v;
     }
-    // Flushed per row: a run that stops early keeps what it computed
+    // Flushed per row: a run that stops early keeps what it computed, and
+    // a full disk shows at the row it stops
+    errno = 0;
     os_ << std::endl;
+    if (!os_) writeFailed(errno);
 }
 
 } // End namespace nmm

@@ -1,5 +1,6 @@
 #include "nmmSolid/global/fatalError/fatalError.H"
 
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <new>
@@ -61,6 +62,9 @@ int catchFatalErrors(const std::function<int()>& body)
 
 int catchFatalErrors(const std::function<int()>& body, std::ostream& err)
 {
+    // A file that outgrows 'ulimit -f' is then a write that fails with
+    // EFBIG, reported like a full disk, not a SIGXFSZ core dump
+    std::signal(SIGXFSZ, SIG_IGN);
     try
     {
         return body();

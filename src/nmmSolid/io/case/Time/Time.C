@@ -393,14 +393,28 @@ void Time::writeTimeDirectory()
         growPrecision();
     }
 
-    atomicDirectory dir(timePath());
-    fs::create_directories(dir.path() / "uniform");
-    writeTimeDict(dir.path() / "uniform" / "time");
-    for (const auto& named : writers_)
+    try
     {
-        named.second(dir.path());
+        atomicDirectory dir(timePath());
+        fs::create_directories(dir.path() / "uniform");
+        writeTimeDict(dir.path() / "uniform" / "time");
+        for (const auto& named : writers_)
+        {
+            named.second(dir.path());
+        }
+        dir.commit();
     }
-    dir.commit();
+    catch (const fs::filesystem_error& e)
+    {
+        throw fatalError("cannot write time " + name_ + " to \"" + timePath().string()
+            + "\": " + e.code().message() + " (at \"" + e.path1().string() + "\")");
+    }
+    catch (const fatalError& e)
+    {
+        // The earlier times are untouched: the new one is written aside
+        throw fatalError("cannot write time " + name_ + " to \"" + timePath().string()
+            + "\": " + e.what());
+    }
 
     lastWrittenIndex_ = timeIndex_;
     purge();

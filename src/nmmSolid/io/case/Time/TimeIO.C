@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <fstream>
 #include <ostream>
 #include <sstream>
+#include <system_error>
 #include <sys/stat.h>
 
 namespace fs = std::filesystem;
@@ -515,12 +517,15 @@ void Time::writeTimeDict(const fs::path& file) const
 
     const dictionary timeDict = dictionary::parse(text.str(), file.string());
 
+    errno = 0;
     std::ofstream os(file);
     timeDict.writeFile(os);
     os.close();
     if (!os)
     {
-        throw fatalError("cannot write file \"" + file.string() + "\"");
+        const int err = errno;
+        throw fatalError("cannot write file \"" + file.string() + "\""
+            + (err ? ": " + std::generic_category().message(err) : std::string()));
     }
 }
 

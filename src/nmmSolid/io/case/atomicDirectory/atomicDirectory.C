@@ -1,5 +1,6 @@
 #include "nmmSolid/io/case/atomicDirectory/atomicDirectory.H"
 
+#include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/global/signals/stopSignals.H"
 
 #include <string>
@@ -24,6 +25,16 @@ bool endsWith(const std::string& s, const std::string& tail)
         && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
+//- A failed file-system call as a fatalError that names the directory
+//  the user knows (not only the hidden one being written)
+fatalError failure(const fs::path& dir, const fs::filesystem_error& e)
+{
+    std::string msg = "cannot write directory \"" + dir.string() + "\": "
+        + e.code().message();
+    if (!e.path1().empty()) msg += " (at \"" + e.path1().string() + "\")";
+    return fatalError(msg);
+}
+
 } // End anonymous namespace
 
 
@@ -38,9 +49,16 @@ atomicDirectory::atomicDirectory(const fs::path& final)
     final_(final),
     temp_(hidden(final, tempSuffix))
 {
-    // A leftover of a killed run with the same name
-    fs::remove_all(temp_);
-    fs::create_directories(temp_);
+    try
+    {
+        // A leftover of a killed run with the same name
+        fs::remove_all(temp_);
+        fs::create_directories(temp_);
+    }
+    catch (const fs::filesystem_error& e)
+    {
+        throw failure(final_, e);
+    }
 }
 
 
@@ -57,16 +75,31 @@ atomicDirectory::~atomicDirectory()
 void atomicDirectory::commit()
 {
     const fs::path old = hidden(final_, oldSuffix);
-    fs::remove_all(old);
+    try
     {
-        // Between the two renames final_ does not exist: no exit here
-        stopSignals::exitGuard guard;
-        const bool replacing = fs::exists(final_);
-        if (replacing) fs::rename(final_, old);
-        fs::rename(temp_, final_);
+        fs::remove_all(old);
+        {
+            // Between the two renames final_ does not exist: no exit here
+            stopSignals::exitGuard guard;
+            const bool replacing = fs::exists(final_);
+            if (replacing) fs::rename(final_, old);
+            std::error_code ec;
+            fs::rename(temp_, final_, ec);
+            if (ec)
+            {
+                // The old content stays the directory's
+                std::error_code ignored;
+                if (replacing) fs::rename(old, final_, ignored);
+                throw fs::filesystem_error("rename", temp_, final_, ec);
+            }
+        }
+        committed_ = true;
+        fs::remove_all(old);
     }
-    committed_ = true;
-    fs::remove_all(old);
+    catch (const fs::filesystem_error& e)
+    {
+        throw failure(final_, e);
+    }
 }
 
 

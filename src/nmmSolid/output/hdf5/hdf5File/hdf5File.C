@@ -27,6 +27,9 @@ void silenceHdf5()
 {
     static const bool silenced = []
     {
+        // Every file is closed by its owner; HDF5's own clean-up at exit
+        // would retry a file whose closing failed (a full disk) and crash
+        H5dont_atexit();
         H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
         return true;
     }();
