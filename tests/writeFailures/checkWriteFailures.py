@@ -30,8 +30,9 @@ complete (its state file readable: the run restarts from it).
                 error names the folder (works as any user).
 
 Each precondition is checked before the run (a probe write must fail the
-same way); when it cannot be set up here, the scenario FAILS saying why,
-rather than passing without having tested anything.
+same way); when it cannot be set up here (no user or mount namespaces in
+a container, say), the scenario says why and exits with 77, which ctest
+reports as skipped: never passed without having tested anything.
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
@@ -58,6 +59,12 @@ def check(ok, what):
 def fatal(what):
     print("FAIL: " + what)
     sys.exit(1)
+
+
+def cannotSetUp(what):
+    """ctest's SKIP_RETURN_CODE: the scenario did not run here"""
+    print("SKIPPED: " + what)
+    sys.exit(77)
 
 
 def run(cmd, prefix=(), preexec=None):
@@ -141,7 +148,7 @@ def readOnly(binDir, source, work):
     prefix = ()
     if os.geteuid() == 0:
         if not shutil.which("unshare"):
-            fatal("running as root, where chmod does not stop writes, and without "
+            cannotSetUp("running as root, where chmod does not stop writes, and without "
                   "'unshare' to drop that: the read-only case cannot be set up")
         prefix = ("unshare", "--user")
     for folder in (case, meshOnly):
@@ -153,7 +160,7 @@ def readOnly(binDir, source, work):
     try:
         rc, out, err = run(["touch", case/"probe"], prefix)
         if rc == 0 or "Permission denied" not in err:
-            fatal("the read-only case cannot be set up here: a probe write %s (%s)"
+            cannotSetUp("the read-only case cannot be set up here: a probe write %s (%s)"
                   % ("succeeded" if rc == 0 else "failed otherwise", err.strip()))
         expectFailure("nmmSolidFoam, read-only case",
                       run([binDir/"nmmSolidFoam", "-case", case], prefix),
@@ -199,7 +206,7 @@ def fullDisk(binDir, source, work):
     prefix = ("unshare", "-m" if os.geteuid() == 0 else "-rm", "bash")
     if not shutil.which("unshare"):
         if os.geteuid() != 0:
-            fatal("the full disk cannot be set up here: no 'unshare' to mount a tmpfs "
+            cannotSetUp("the full disk cannot be set up here: no 'unshare' to mount a tmpfs "
                   "without root")
         prefix = ("bash",)
     # nmmMesh writes about 100 kB: at 240 kB free it succeeds
@@ -207,7 +214,7 @@ def fullDisk(binDir, source, work):
         for app in ("nmmSolidFoam", "nmmMesh") if free < 240 else ("nmmSolidFoam",):
             rc, out, err = run([script, mnt, case, free, binDir/app], prefix)
             if rc != 0:
-                fatal("the full disk cannot be set up here (%s, step %d): %s; mounting a "
+                cannotSetUp("the full disk cannot be set up here (%s, step %d): %s; mounting a "
                       "tmpfs needs root or user namespaces" % (" ".join(prefix), rc,
                                                                 err.strip()))
             full = Path(str(case) + ".full")
