@@ -27,6 +27,9 @@ regular expressions and checked against values counted by hand:
     staircase, area within 3 % (each block 5 %), every simplified vertex on the staircase
     and every staircase vertex within the tolerance of the simplified
     boundary, the shared boundary identical in both blocks;
+  - file-name tags: image "<constant>/coins.png", output
+    "<constant>/geometry/tagged" and the same with $FOAM_CASE are the
+    case's files (a relative name is relative to the case);
   - nmmMesh accepts the written lists through
     blocks ( #include "<constant>/geometry/grains" ); (ends "Mesh OK.");
   - broken input exits 1 naming the problem: missing image, garbage
@@ -461,6 +464,44 @@ def test_random_meshes(n=60):
     check(not bad, "%d random traced images mesh OK%s" % (n, "" if not bad else ": not " + ", ".join(bad)))
 
 
+def set_image(case, image):
+    """The case with its dictionary's image entry replaced by image"""
+    d = case/"system"/"nmmImageToBlocksDict"
+    d.write_text(d.read_text().replace('image "grains.png";', "image %s;" % image))
+    return case
+
+
+def test_case_tags():
+    """OpenFOAM's file-name tags: image "<constant>/coins.png" and output
+    "<constant>/geometry/tagged" are the case's constant/ files, and
+    "$FOAM_CASE/..." the same; a relative name stays relative to the case."""
+    img = np.zeros((4, 6), np.uint8)
+    img[1:3, 1:3] = 1
+    img[1:3, 3:5] = 2           # two grains of 4 pixels each
+    for name, image, output in (
+            ("caseTags", '"<constant>/coins.png"', '"<constant>/geometry/tagged"'),
+            ("foamCase", '"$FOAM_CASE/constant/coins.png"', '"${FOAM_CASE}/constant/geometry/tagged"'),
+            ("relative", '"constant/coins.png"', "tagged")):
+        case = set_image(make_case(name, None, output=output), image)
+        (case/"constant").mkdir()
+        write_png(case/"constant"/"coins.png", img)
+        rc, out, err = run("nmmImageToBlocks", case)
+        check(rc == 0, "%s: image %s read, exit 0" % (name, image)
+              + ("" if rc == 0 else "\n" + out + err))
+        if rc:
+            continue
+        b = read_blocks(case, "tagged")
+        check(sorted(b) == ["grain1", "grain2"]
+              and all(close(block_area(g), 4*PS*PS) for g in b.values()),
+              "%s: output %s is constant/geometry/tagged with the two grains" % (name, output))
+        check((case/"constant"/"geometry"/"tagged.png").is_file()
+              and not (case/"constant"/"geometry"/"<constant>").exists(),
+              "%s: preview constant/geometry/tagged.png, no literal '<constant>' folder" % name)
+    # A tag that is not the case's stays literal, so the file is not found
+    case = set_image(make_case("otherTag", None), '"<etc>/coins.png"')
+    expect_error("an unknown tag", case, "<etc>/coins.png")
+
+
 def expect_error(name, case, *substrings):
     rc, out, err = run("nmmImageToBlocks", case)
     missing = [s for s in substrings if s not in err]
@@ -533,6 +574,7 @@ def main():
     test_binary()
     test_tiff()
     mesh_cases.append(test_simplification())
+    test_case_tags()
     if (APPS/"nmmMesh").exists():
         test_mesh(mesh_cases)
         test_random_meshes()

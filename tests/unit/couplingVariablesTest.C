@@ -10,6 +10,9 @@
 #include <gtest/gtest.h>
 
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 using nmm::couplingInterface;
 using nmm::couplingVariables;
@@ -231,4 +234,27 @@ TEST(couplingVariables, poresHaveACapacityAndOnePorosity)
         "2: region 'pores' cannot read 'temperature' (it can read: pressure)");
     EXPECT_EQ(error("modelName m; regions { top { read (); write (); maxPores 1; } }\n"),
         "2: maxPores is for the region 'pores' only");
+}
+
+
+// vtkDirectory names a directory: OpenFOAM's case tags expand against the
+// case of couplingDict, a relative name stays relative (to the importer)
+TEST(couplingVariables, vtkDirectoryTakesTheCaseTags)
+{
+    for (const auto& [written, expected] :
+         std::vector<std::pair<std::string, std::string>>
+         {{"\"<case>/VTK\"", "/VTK"}, {"\"$FOAM_CASE/frames\"", "/frames"},
+          {"VTK", ""}})
+    {
+        const auto c = twoBlocks(fullDict + "vtkDirectory " + written + ";\n");
+        const couplingVariables vars = read(*c);
+        if (expected.empty())
+        {
+            EXPECT_EQ(vars.vtkDirectory(), "VTK");
+        }
+        else
+        {
+            EXPECT_EQ(vars.vtkDirectory(), c->dir.path.string() + expected) << written;
+        }
+    }
 }

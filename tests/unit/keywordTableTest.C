@@ -1,11 +1,16 @@
 // Declared keywords (validation, defaults, -help text) and run-time
 // selection of model types by name.
 
+#include "nmmSolid/io/dictionary/fileName.H"
 #include "nmmSolid/io/dictionary/keywordTable.H"
 #include "nmmSolid/io/dictionary/runTimeSelection.H"
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 using nmm::dictionary;
@@ -201,4 +206,56 @@ TEST(keywordTable, variablesUsedByMacrosAreNotUnknownKeywords)
     // ... but a misspelt keyword that nothing refers to is still an error
     const IOerror err = validationError("type t; E 1; nu 0.3; rhoo 1;");
     EXPECT_NE(err.message().find("did you mean 'rho'"), std::string::npos);
+}
+
+
+// OpenFOAM's case tags in file names (fileName.H): at the start only,
+// $FOAM_CASE anywhere, relative names unchanged
+TEST(fileName, caseTagsAndFoamCaseExpand)
+{
+    const std::filesystem::path c = "/work/cases/coins";
+    EXPECT_EQ(nmm::expandFileName("<constant>/coins.png", c), "/work/cases/coins/constant/coins.png");
+    EXPECT_EQ(nmm::expandFileName("<system>/extra", c), "/work/cases/coins/system/extra");
+    EXPECT_EQ(nmm::expandFileName("<case>/VTK", c), "/work/cases/coins/VTK");
+    EXPECT_EQ(nmm::expandFileName("<case>", c), "/work/cases/coins");
+    EXPECT_EQ(nmm::expandFileName("$FOAM_CASE/constant/a.png", c), "/work/cases/coins/constant/a.png");
+    EXPECT_EQ(nmm::expandFileName("${FOAM_CASE}/b", c), "/work/cases/coins/b");
+    EXPECT_EQ(nmm::expandFileName("out/$FOAM_CASENAME.png", c), "out/coins.png");
+    // Relative names, other tags and other variables stay as written
+    EXPECT_EQ(nmm::expandFileName("images/coins.png", c), "images/coins.png");
+    EXPECT_EQ(nmm::expandFileName("a/<constant>/x", c), "a/<constant>/x");
+    EXPECT_EQ(nmm::expandFileName("<etc>/x", c), "<etc>/x");
+    EXPECT_EQ(nmm::expandFileName("$FOAM_CASEX/y", c), "$FOAM_CASEX/y");
+    EXPECT_EQ(nmm::expandFileName("${FOAM_CASE", c), "${FOAM_CASE");
+    EXPECT_EQ(*nmm::caseTagPath("constant", c), c / "constant");
+    EXPECT_FALSE(nmm::caseTagPath("etc", c));
+    // No case directory: the working directory, never the root
+    EXPECT_EQ(nmm::expandFileName("<case>/VTK", ""), "./VTK");
+    EXPECT_EQ(nmm::expandFileName("<constant>/a", ""), "./constant/a");
+}
+
+
+TEST(keywordTable, fileNamesExpandAgainstTheCaseOfTheirFile)
+{
+    keywordTable t("imageDict", "a file-name keyword");
+    t.fileName("image", "the image").required();
+    t.fileName("output", "name under constant/geometry").defaultValue("grains");
+    t.word("material", "a word");
+
+    // The case is found from the file's place (system/), as for #include
+    const auto dir = std::filesystem::temp_directory_path()
+        / ("nmmFileNameTest" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir / "system");
+    std::ofstream(dir / "system" / "imageDict")
+        << "image \"<constant>/coins.png\";\nmaterial sand;\n";
+    const dictionary d = dictionary::read(dir / "system" / "imageDict");
+    t.validate(d);
+    EXPECT_EQ(t.getFileName(d, "image"), dir / "constant" / "coins.png");
+    EXPECT_EQ(t.getFileName(d, "output"), "grains");
+    EXPECT_THROW(t.getFileName(d, "material"), IOerror);
+    // the case of a sub-dictionary is its file's
+    const dictionary nested = dictionary::parse("sub { image \"<case>/a\"; }",
+        (dir / "system" / "other").string());
+    EXPECT_EQ(t.getFileName(nested.subDict("sub"), "image"), dir / "a");
+    std::filesystem::remove_all(dir);
 }

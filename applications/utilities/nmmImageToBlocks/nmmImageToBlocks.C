@@ -95,7 +95,7 @@ const nmm::keywordTable& keywords()
     static const nmm::keywordTable table = []
     {
         nmm::keywordTable t("nmmImageToBlocksDict", "blocks from a segmented image of grains");
-        t.string("image", "the image, relative to the case folder: PNG (grey, "
+        t.fileName("image", "the image, relative to the case folder: PNG (grey, "
             "1-16 bit, or palette indices) or TIFF (one unsigned integer sample, "
             "1-32 bit)").required();
         t.word("type", "label: one integer per grain, 0 = pore; binary: grains "
@@ -111,7 +111,7 @@ const nmm::keywordTable& keywords()
         t.boolean("dropBorderGrains", "drop (make pore) the grains that touch the "
             "image's border").defaultValue("no");
         t.word("material", "material of every block").required();
-        t.word("output", "name of the block list under constant/geometry")
+        t.fileName("output", "name of the block list under constant/geometry")
             .defaultValue("grains");
         t.integer("maxPixels", "larger images are refused from their header, before "
             "decoding (about 28 bytes of memory a pixel: the default, 10,000 x "
@@ -132,7 +132,7 @@ struct settings
     double minGrainArea = 0;
     bool dropBorderGrains = false;
     std::string material;
-    std::string output;
+    fs::path output;
     std::uint64_t maxPixels = 0;
 };
 
@@ -140,14 +140,14 @@ settings readSettings(const nmm::dictionary& dict, const fs::path& casePath)
 {
     const nmm::keywordTable& k = keywords();
     settings s;
-    s.image = casePath / k.get<std::string>(dict, "image");
+    s.image = casePath / k.getFileName(dict, "image");
     s.binary = k.get<std::string>(dict, "type") == "binary";
     s.pixelSize = k.get<double>(dict, "pixelSize");
     s.tolerance = k.get<double>(dict, "simplifyTolerance");
     s.minGrainArea = k.get<double>(dict, "minGrainArea");
     s.dropBorderGrains = k.get<bool>(dict, "dropBorderGrains");
     s.material = k.get<std::string>(dict, "material");
-    s.output = k.get<std::string>(dict, "output");
+    s.output = k.getFileName(dict, "output");
     s.maxPixels = std::uint64_t(k.get<long long>(dict, "maxPixels"));
     return s;
 }

@@ -134,7 +134,7 @@ const nmm::keywordTable& keywords()
         t.word("material", "material of every platelet").required();
         t.word("namePrefix", "platelet names are <namePrefix><index>, from 0")
             .defaultValue("platelet");
-        t.word("output", "written to constant/geometry/<output> and <output>.png")
+        t.fileName("output", "written to constant/geometry/<output> and <output>.png")
             .defaultValue("platelets");
         return t;
     }();
@@ -153,7 +153,8 @@ struct settings
     double minGap;
     std::uint64_t seed;
     std::size_t maxAttempts;
-    std::string material, namePrefix, output;
+    std::string material, namePrefix;
+    std::filesystem::path output;
 };
 
 
@@ -176,7 +177,7 @@ settings readSettings(const nmm::dictionary& dict)
     s.maxAttempts = std::size_t(k.get<long long>(dict, "maxAttempts"));
     s.material = k.get<std::string>(dict, "material");
     s.namePrefix = k.get<std::string>(dict, "namePrefix");
-    s.output = k.get<std::string>(dict, "output");
+    s.output = k.getFileName(dict, "output");
     return s;
 }
 

@@ -78,7 +78,7 @@ const nmm::keywordTable& keywords()
         t.subDict("lower", "profile of the lower block's face").required();
         t.subDict("upper", "profile of the upper block's face").required();
         t.subDict("columns", "optional confining columns: width, material");
-        t.word("output", "name of the file under constant/geometry")
+        t.fileName("output", "name of the file under constant/geometry")
             .defaultValue("fracture");
         return t;
     }();
@@ -444,7 +444,7 @@ int run(int argc, char* argv[])
         << " m at x = " << s.xFirstContact << " m, mean " << s.mean
         << " m, largest " << s.max << " m\n";
 
-    const std::string output = keywords().get<std::string>(dict, "output");
+    const fs::path output = keywords().getFileName(dict, "output");
     const fs::path file = nmm::writeGeometry(casePath, output, blocks,
         "Written by nmmRoughFracture from system/nmmRoughFractureDict: edit that, not this").file;
     std::ofstream patches(file.string() + "Patches");

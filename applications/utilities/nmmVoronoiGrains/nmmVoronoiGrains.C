@@ -124,7 +124,7 @@ const nmm::keywordTable& keywords()
         t.word("material", "material of every grain").required();
         t.word("namePrefix", "grain names are <namePrefix><index>, from 0")
             .defaultValue("grain");
-        t.word("output", "written to constant/geometry/<output> and <output>.png")
+        t.fileName("output", "written to constant/geometry/<output> and <output>.png")
             .defaultValue("grains");
         return t;
     }();
@@ -140,7 +140,8 @@ struct settings
     std::uint64_t seed;
     int lloydIterations;
     double mergeTolerance;
-    std::string material, namePrefix, output;
+    std::string material, namePrefix;
+    std::filesystem::path output;
 };
 
 
@@ -191,7 +192,7 @@ settings readSettings(const nmm::dictionary& dict)
     s.mergeTolerance = keywords().get<double>(dict, "mergeTolerance");
     s.material = keywords().get<std::string>(dict, "material");
     s.namePrefix = keywords().get<std::string>(dict, "namePrefix");
-    s.output = keywords().get<std::string>(dict, "output");
+    s.output = keywords().getFileName(dict, "output");
     return s;
 }
 

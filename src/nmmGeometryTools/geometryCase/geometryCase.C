@@ -16,7 +16,7 @@ dictionary readUtilityDict(const std::filesystem::path& casePath, const std::str
 writtenGeometry writeGeometry
 (
     const std::filesystem::path& casePath,
-    const std::string& output,
+    const std::filesystem::path& output,
     const blockList& blocks,
     const std::string& comment
 )

@@ -34,7 +34,7 @@ const keywordTable& couplingVariables::dictKeywords()
         t.subDict("regions", "per region: the fields read and written").required();
         t.scalar("residualAperture", "smallest aperture given for a closed contact",
             "m").above(0);
-        t.string("vtkDirectory", "an FMU writes the solid's VTK frames here after every"
+        t.fileName("vtkDirectory", "an FMU writes the solid's VTK frames here after every"
             " step (relative: to the importer's working directory); none if absent");
         return t;
     }();
@@ -319,13 +319,13 @@ couplingVariables::couplingVariables
 )
 {
     readOptions ro;
-    ro.caseDir = couplingDict.parent_path().parent_path();
+    ro.caseDir = std::filesystem::absolute(couplingDict).parent_path().parent_path();
     const dictionary d = dictionary::read(couplingDict, ro);
     dictKeywords().validate(d);
     modelName_ = dictKeywords().get<std::string>(d, "modelName");
     if (d.findEntry("vtkDirectory"))
     {
-        vtkDirectory_ = dictKeywords().get<std::string>(d, "vtkDirectory");
+        vtkDirectory_ = dictKeywords().getFileName(d, "vtkDirectory");
     }
 
     couplingVariable time;

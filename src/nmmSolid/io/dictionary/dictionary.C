@@ -18,7 +18,8 @@ dictionary::dictionary(dictionary&& other) noexcept
     name_(std::move(other.name_)),
     parent_(other.parent_),
     entries_(std::move(other.entries_)),
-    where_(other.where_)
+    where_(other.where_),
+    caseDir_(std::move(other.caseDir_))
 {
     rebuildIndex();
 }
@@ -30,6 +31,7 @@ dictionary& dictionary::operator=(dictionary&& other) noexcept
     parent_ = other.parent_;
     entries_ = std::move(other.entries_);
     where_ = other.where_;
+    caseDir_ = std::move(other.caseDir_);
     rebuildIndex();
     return *this;
 }
@@ -52,6 +54,7 @@ std::unique_ptr<dictionary> dictionary::clone() const
 {
     auto d = std::make_unique<dictionary>(name_);
     d->where_ = where_;
+    d->caseDir_ = caseDir_;
     d->entries_.reserve(entries_.size());
     for (const auto& e : entries_)
     {

@@ -1,6 +1,7 @@
 #include "nmmSolid/io/dictionary/dictionaryParser.H"
 #include "nmmSolid/io/dictionary/dictionaryLexer.H"
 #include "nmmSolid/io/dictionary/exprEval.H"
+#include "nmmSolid/io/dictionary/fileName.H"
 
 #include <algorithm>
 #include <cmath>
@@ -125,6 +126,7 @@ dictionary dictionaryParser::parseFile(const fs::path& file)
     dictionary d(file.string());
     d.where_ = {name, 1, 1};
     caseDir_ = caseDirFor(file);
+    d.caseDir_ = caseDir_;
     std::error_code ec;
     includeStack_.push_back(fs::weakly_canonical(file, ec));
     parseSource(text, name, d);
@@ -139,6 +141,7 @@ dictionary dictionaryParser::parseText(std::string_view text, const std::string&
     dictionary d(name);
     d.where_ = {file, 1, 1};
     caseDir_ = caseDirFor(name);
+    d.caseDir_ = caseDir_;
     parseSource(std::string(text), file, d);
     return d;
 }
@@ -148,6 +151,7 @@ dictionary dictionaryParser::parseTokens(tokenList tokens, const std::string& na
 {
     dictionary d(name);
     caseDir_ = caseDirFor(name);
+    d.caseDir_ = caseDir_;
     dictionaryLexer lx({}, internFileName(name));
     std::reverse(tokens.begin(), tokens.end());
     lx.putBackAll(std::move(tokens));
@@ -658,8 +662,7 @@ bool dictionaryParser::expandTag
     const std::size_t close = s.find('>', i);
     if (close == std::string::npos) return false;
     const std::string tag = s.substr(i + 1, close - i - 1);
-    if (tag == "case") out += caseDir_.string();
-    else if (tag == "system" || tag == "constant") out += (caseDir_ / tag).string();
+    if (const auto dir = caseTagPath(tag, caseDir_)) out += dir->string();
     else if (tag == "etc" && !etcDirs_.empty()) out += etcDirs_.front().string();
     else return false;
     i = close + 1;

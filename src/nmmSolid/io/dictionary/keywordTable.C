@@ -1,4 +1,5 @@
 #include "nmmSolid/io/dictionary/keywordTable.H"
+#include "nmmSolid/io/dictionary/fileName.H"
 
 #include <algorithm>
 #include <iomanip>
@@ -17,6 +18,7 @@ const char* kindName(keywordTable::valueKind k)
         case keywordTable::valueKind::boolean: return "switch";
         case keywordTable::valueKind::word: return "word";
         case keywordTable::valueKind::string: return "string";
+        case keywordTable::valueKind::fileName: return "file name";
         case keywordTable::valueKind::vector: return "vector";
         case keywordTable::valueKind::list: return "list";
         case keywordTable::valueKind::dictionary: return "dictionary";
@@ -232,6 +234,7 @@ void keywordTable::checkValue(const keyword& k, const entry& e) const
             break;
         case vk::word:
         case vk::string:
+        case vk::fileName:
         {
             const std::string w = dictionary::readEntryValue<std::string>(e);
             if (!k.choiceList.empty()
@@ -257,6 +260,21 @@ void keywordTable::checkValue(const keyword& k, const entry& e) const
         default:
             break;
     }
+}
+
+
+std::filesystem::path keywordTable::getFileName
+(
+    const dictionary& dict,
+    const std::string& name
+) const
+{
+    if (declared(name).kind != valueKind::fileName)
+    {
+        throw IOerror("keyword '" + name + "' of " + owner_ + " is not "
+            "declared as a file name");
+    }
+    return expandFileName(get<std::string>(dict, name), dict.caseDir());
 }
 
 
