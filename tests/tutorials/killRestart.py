@@ -9,8 +9,9 @@ uninterrupted run:
 The case is tutorials/contact/grainsInBox, shortened and written often:
 grains falling into a box, contacts opening, sticking and sliding, steps
 cut and grown. It is run once without interruption, and once killed with
-SIGKILL at least 10 times (at moments drawn from a seeded generator, and
-at least three times while a time directory is being written) and
+SIGKILL at least 10 times (after one or two new write times and a moment
+drawn from a seeded generator, or while a time directory is being
+written: at least three times) and
 restarted with startFrom latestTime after each kill, until it ends.
 
   - after every kill, every completed write time is intact: each time
@@ -126,10 +127,17 @@ def intactWrites(case, env, checked, failures, after):
             failures.append("%s: %s is listed but does not read" % (after, frame.name))
 
 
-def writing(case):
-    """A time directory is being written (atomicDirectory's hidden name)."""
-    return any(p.name.startswith(".") and p.name.endswith(".tmp")
-               for p in case.iterdir())
+def writing(case, since):
+    """A time directory is being written (atomicDirectory's hidden name),
+    made after since: not one a killed run left behind"""
+    for p in case.iterdir():
+        try:
+            if p.name.startswith(".") and p.name.endswith(".tmp") \
+                    and p.stat().st_mtime >= since:
+                return True
+        except FileNotFoundError:
+            pass
+    return False
 
 
 def runKilled(case, env, rng, failures):
@@ -138,22 +146,33 @@ def runKilled(case, env, rng, failures):
     checked = set()
     for attempt in range(200):
         log = open(case/("log.nmmSolidFoam.%d" % attempt), "w")
+        started = time.time()
         proc = subprocess.Popen(["nmmSolidFoam"], cwd=case, env=env,
                                 stdout=log, stderr=subprocess.STDOUT)
+        # Kills are placed by the run's progress, not by the clock, so
+        # that a fast machine is killed as often as a slow one: after one
+        # or two new write times and a random moment more, or as soon as
+        # a time directory is being written
         atWrite = kills < minKills and kills % 3 == 2
-        deadline = time.monotonic() + rng.uniform(0.3, 1.5)
+        target = len(timeDirs(case)) + rng.randint(1, 2)
+        extra = rng.uniform(0.0, 0.05)
+        deadline = None
         killed = False
         while proc.poll() is None:
-            if kills < minKills and (writing(case) if atWrite
-                                     else time.monotonic() > deadline):
-                hit = writing(case)
+            if kills < minKills and not atWrite and deadline is None \
+                    and len(timeDirs(case)) >= target:
+                deadline = time.monotonic() + extra
+            due = writing(case, started) if atWrite else \
+                deadline is not None and time.monotonic() >= deadline
+            if kills < minKills and due:
+                hit = writing(case, started)
                 proc.send_signal(signal.SIGKILL)
                 proc.wait()
                 kills += 1
                 whileWriting += hit
                 killed = True
                 break
-            time.sleep(0.0005 if atWrite else 0.01)
+            time.sleep(0.0005 if atWrite else 0.005)
         log.close()
         if killed:
             intactWrites(case, env, checked, failures, "after kill %d" % kills)
