@@ -346,24 +346,8 @@ poreSpace couplingInterface::poresAt(const solidState& s) const
 
 poreSpace couplingInterface::outlinePores(const solidState& s) const
 {
-    const auto& cover = model_.cover();
-    const auto& pc = model_.elements();
-    if (!outlines_) outlines_ = std::make_unique<contactBoundaries>(cover, pc, model_.geometry());
-    const Eigen::Matrix2Xd patchD = model_.space().patchDisplacements(s.D);
-    std::vector<std::vector<poreSpace::loop>> blocks(model_.geometry().blocks().size());
-    for (const contactLoop& l : outlines_->loops())
-    {
-        if (l.type == contactLoop::kind::jointFace) continue;
-        poreSpace::loop points;
-        for (const auto& v : l.vertices)
-        {
-            points.push_back(contactBoundaries::position(cover, pc, v, patchD));
-        }
-        auto& loops = blocks[std::size_t(l.block)];
-        // The outer loop first, then the holes
-        if (l.type == contactLoop::kind::outer) loops.insert(loops.begin(), std::move(points));
-        else loops.push_back(std::move(points));
-    }
+    if (!outlines_) outlines_ = std::make_unique<blockOutlines>(model_);
+    const auto blocks = outlines_->at(s.D);
     try
     {
         return poreSpace::of(blocks);

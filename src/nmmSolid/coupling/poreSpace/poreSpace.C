@@ -1,9 +1,8 @@
 #include "nmmSolid/coupling/poreSpace/poreSpace.H"
 
+#include "nmmSolid/coupling/poreSpace/exactOutlines.H"
+
 #include <CGAL/Boolean_set_operations_2.h>
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Polygon_2.h>
-#include <CGAL/Polygon_with_holes_2.h>
 
 #include <stdexcept>
 #include <string>
@@ -14,32 +13,7 @@ namespace nmm
 namespace
 {
 
-using K = CGAL::Exact_predicates_exact_constructions_kernel;
-using cgalPolygon = CGAL::Polygon_2<K>;
-using cgalPolygonWithHoles = CGAL::Polygon_with_holes_2<K>;
-
-
-//- The loop as a simple polygon of the given orientation
-cgalPolygon polygon(const poreSpace::loop& points, CGAL::Orientation o, std::size_t block)
-{
-    cgalPolygon p;
-    for (const auto& x : points)
-    {
-        const K::Point_2 q(x.x(), x.y());
-        // Points where an edge crosses a cover line may coincide with a vertex
-        if (p.is_empty() || (q != *(p.vertices_end() - 1) && q != *p.vertices_begin()))
-        {
-            p.push_back(q);
-        }
-    }
-    if (p.size() < 3 || !p.is_simple())
-    {
-        throw std::invalid_argument("the outline of block " + std::to_string(block)
-            + " is not a simple polygon where it is now");
-    }
-    if (p.orientation() != o) p.reverse_orientation();
-    return p;
-}
+using cgalPolygon = exactPolygon;
 
 
 poreSpace::pore poreOf(const cgalPolygon& hole)
@@ -88,19 +62,8 @@ bool poreSpace::pore::contains(const Eigen::Vector2d& x) const
 
 poreSpace poreSpace::of(const std::vector<std::vector<loop>>& blocks)
 {
-    std::vector<cgalPolygonWithHoles> shapes;
-    for (std::size_t b = 0; b < blocks.size(); ++b)
-    {
-        if (blocks[b].empty()) continue;
-        std::vector<cgalPolygon> holes;
-        for (std::size_t h = 1; h < blocks[b].size(); ++h)
-        {
-            holes.push_back(polygon(blocks[b][h], CGAL::CLOCKWISE, b));
-        }
-        shapes.emplace_back(polygon(blocks[b][0], CGAL::COUNTERCLOCKWISE, b),
-            holes.begin(), holes.end());
-    }
-    std::vector<cgalPolygonWithHoles> united;
+    const std::vector<exactPolygonWithHoles> shapes = exactBlocks(blocks);
+    std::vector<exactPolygonWithHoles> united;
     CGAL::join(shapes.begin(), shapes.end(), std::back_inserter(united));
 
     poreSpace result;

@@ -1,0 +1,194 @@
+#include "nmmSolid/coupling/poreFlow/poreFlowCase/poreFlowCase.H"
+
+#include "nmmSolid/global/fatalError/fatalError.H"
+
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <regex>
+#include <sstream>
+
+#include <sys/wait.h>
+
+namespace nmm
+{
+
+namespace fs = std::filesystem;
+
+namespace
+{
+
+std::string readText(const fs::path& file)
+{
+    std::ifstream is(file);
+    std::ostringstream os;
+    os << is.rdbuf();
+    return os.str();
+}
+
+
+void writeText(const fs::path& file, const std::string& text)
+{
+    std::ofstream os(file);
+    os << text;
+    if (!os.flush()) throw fatalError("could not write " + file.string());
+}
+
+
+std::string parameters(const poreFlowCase::fluid& f, const std::string& sidesType)
+{
+    std::ostringstream os;
+    os << std::setprecision(17)
+       << "// From nmmPoreFlowDict: what the template's files take with $name\n\n"
+       << "// Kinematic viscosity mu/rho [m2/s]\nnu              " << f.viscosity/f.density << ";\n\n"
+       << "// Inlet kinematic pressure, the pressure drop over the density [m2/s2]\n"
+       << "inletPressure   " << f.pressureDrop/f.density << ";\n\n";
+    if (sidesType == "symmetryPlane")
+    {
+        os << "sidesU          { type symmetryPlane; }\nsidesP          { type symmetryPlane; }\n";
+    }
+    else
+    {
+        os << "sidesU          { type noSlip; }\nsidesP          { type zeroGradient; }\n";
+    }
+    return os.str();
+}
+
+
+//- The value of the last line of a function object's file
+double lastValue(const fs::path& file, const fs::path& log)
+{
+    std::ifstream is(file);
+    if (!is) throw fatalError("OpenFOAM wrote no " + file.string() + ": see " + log.string());
+    std::string line, last;
+    while (std::getline(is, line)) if (!line.empty() && line[0] != '#') last = line;
+    std::istringstream ls(last);
+    double time = 0, value = 0;
+    if (!(ls >> time >> value))
+    {
+        throw fatalError("no value in " + file.string() + ": see " + log.string());
+    }
+    return value;
+}
+
+//- checkMesh's failed checks ("***" lines) if every one is a highly skew
+//  face; empty otherwise
+std::vector<std::string> meshFailures(const std::string& log)
+{
+    std::vector<std::string> failed;
+    std::istringstream is(log);
+    for (std::string line; std::getline(is, line);)
+    {
+        const auto star = line.find("***");
+        if (star == std::string::npos) continue;
+        if (line.find("highly skew faces") == std::string::npos) return {};
+        failed.push_back(line.substr(star + 3));
+    }
+    return failed;
+}
+
+} // End anonymous namespace
+
+
+fs::path poreFlowCase::defaultTemplate()
+{
+    if (const char* dir = std::getenv("NMM_PROJECT_DIR"); dir && *dir)
+    {
+        return fs::path(dir)/"etc"/"templates"/"poreFlow";
+    }
+    return fs::path(NMM_SOURCE_ETC_DIR)/"templates"/"poreFlow";
+}
+
+
+void poreFlowCase::write
+(
+    const fs::path& templateDir,
+    const fluid& f,
+    const foamPolyMesh& writer,
+    const poreMesh& mesh,
+    const std::vector<std::string>& blockNames,
+    const fs::path& runFunctions
+) const
+{
+    for (const char* file : {"0/U", "0/p", "system/controlDict", "system/fvSchemes",
+        "system/fvSolution", "constant/transportProperties"})
+    {
+        if (!fs::is_regular_file(templateDir/file))
+        {
+            throw fatalError("the pore-flow template " + templateDir.string() + " has no " + file);
+        }
+    }
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    for (const char* sub : {"0", "constant", "system"})
+    {
+        if (fs::is_directory(templateDir/sub))
+        {
+            fs::copy(templateDir/sub, dir_/sub, fs::copy_options::recursive);
+        }
+    }
+    writeText(dir_/"constant"/"poreFlowParameters",
+        foamPolyMesh::header("dictionary", "constant", "poreFlowParameters")
+        + parameters(f, writer.sidesType));
+    writer.write(dir_, mesh, blockNames);
+    writeText(dir_/"Allrun",
+        "#!/bin/bash\n"
+        "# Written by nmmPoreFlow: the OpenFOAM run of this pore space\n"
+        "cd \"${0%/*}\" || exit 1\n"
+        ". \"" + runFunctions.string() + "\"\n"
+        "# Debian's OpenFOAM binaries find their etc/ through WM_PROJECT_DIR\n"
+        "export WM_PROJECT_DIR=\"${WM_PROJECT_DIR:-/usr/share/openfoam}\"\n"
+        "runApplication checkMesh || exit 1\n"
+        "runApplication \"$(getApplication)\" || exit 1\n");
+    fs::permissions(dir_/"Allrun", fs::perms::owner_exec | fs::perms::group_exec
+        | fs::perms::others_exec, fs::perm_options::add);
+}
+
+
+poreFlowCase::result poreFlowCase::run() const
+{
+    result r;
+    const std::string command = "bash \"" + (dir_/"Allrun").string() + "\" > \""
+        + (dir_/"log.Allrun").string() + "\" 2>&1";
+    const int status = std::system(command.c_str());
+
+    const fs::path checkLog = dir_/"log.checkMesh";
+    const std::string check = readText(checkLog);
+    if (check.empty())
+    {
+        throw fatalError("checkMesh did not run (is OpenFOAM installed? Debian package "
+            "'openfoam'): see " + (dir_/"log.Allrun").string());
+    }
+    r.meshWarnings = meshFailures(check);
+    if (check.find("Mesh OK.") == std::string::npos && r.meshWarnings.empty())
+    {
+        throw fatalError("OpenFOAM's checkMesh failed the pore mesh: see " + checkLog.string());
+    }
+    const std::string application = "simpleFoam";
+    fs::path solverLog = dir_/("log." + application);
+    for (const auto& e : fs::directory_iterator(dir_))
+    {
+        const auto name = e.path().filename().string();
+        if (name.rfind("log.", 0) == 0 && name != "log.checkMesh" && name != "log.Allrun")
+        {
+            solverLog = e.path();
+        }
+    }
+    if (status != 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    {
+        throw fatalError("the OpenFOAM run failed: see " + solverLog.string());
+    }
+    const std::string log = readText(solverLog);
+    std::smatch m;
+    if (!std::regex_search(log, m, std::regex("SIMPLE solution converged in ([0-9]+) iterations")))
+    {
+        throw fatalError("the flow did not converge to fvSolution's residualControl "
+            "within controlDict's endTime: see " + solverLog.string());
+    }
+    r.iterations = std::stoi(m[1]);
+    r.outletFlowRate = lastValue(dir_/"postProcessing"/"flowRate"/"0"/"surfaceFieldValue.dat", solverLog);
+    r.inletFlowRate = -lastValue(dir_/"postProcessing"/"inletFlowRate"/"0"/"surfaceFieldValue.dat", solverLog);
+    return r;
+}
+
+} // End namespace nmm
