@@ -8,19 +8,27 @@ binaries (Debian's openfoam package, v1912).
 
   slot      plane Poiseuille flow between two blocks: the slot's own
             permeability k W/h (W the box's width, h the slot's) is h^2/12
-            within 1%; the flow balances (|Qout - Qin| < 1e-6 Qout)
+            within 1%; the flow balances (|Qout - Qin| < 1e-6 Qout); the
+            fluid's force on the walls (pressure and wall shear stress) is
+            the pressure drop times the inlet's width within 1% (momentum
+            balance of the steady flow), half on each block
   discs     Stokes flow across a square array of discs (one row of four
             unit cells, symmetry planes above and below), at solid
             fractions 0.2 and 0.4, against the drag of Sangani & Acrivos
             (1982, Int. J. Multiphase Flow 8:193, Table 1, square array:
             F/(mu U) = 51.53 and 217.89, four digits): k = l^2/(F/(mu U)),
             within 2% (the inlet and outlet planes are set at uniform
-            pressure, which a periodic array has only approximately)
+            pressure, which a periodic array has only approximately); the
+            force balance as for the slot, a quarter on each disc
   errors    broken input: an unknown keyword ("did you mean"), a missing
             physics keyword, a box that the blocks close, a time that was
             not written; each an error naming the file or time, exit 1
 
-Usage: poreFlow.py <binDir> <projectDir> <workDir> [slot|discs|errors]
+  convergence  not a test: the table of docs/verification/README.md
+            (poreFlow), the error of both cases against the cells and the
+            run time
+
+Usage: poreFlow.py <binDir> <projectDir> <workDir> [slot|discs|errors|convergence]
 """
 import math
 import os
@@ -131,12 +139,26 @@ def slot():
     check(abs(err) < 0.01, "slot: permeability h^2/12 within 1%% (%.3g%%)" % (100*err))
     balance = float(re.search(r"mass balance\s+(\S+)", out).group(1))
     check(balance < 1e-6, "slot: flow in equals flow out (%.2g)" % balance)
+    check_forces(case, out, "slot", [h/2, h/2])
     check(r["porosity"] == r["porosity"] and abs(r["porosity"] - h/W) < 1e-10,
           "slot: porosity h/W (%.15g)" % r["porosity"])
     check(r["Reynolds"] < 1, "slot: creeping flow (Re %.3g)" % r["Reynolds"])
     check(os.path.isfile(case + "/poreFlow/0/log.simpleFoam")
           and os.path.isfile(case + "/poreFlow/0/log.checkMesh"),
           "slot: OpenFOAM's logs in poreFlow/0")
+
+
+def check_forces(case, out, name, widths):
+    """Steady flow: the fluid's force on the walls along the flow is the
+    pressure drop times the inlet's width (momentum balance), to 1%; each
+    block carries dp times its share of the width"""
+    balance = float(re.search(r"dp times the inlet.*\(balance (\S+)\)", out).group(1))
+    check(balance < 0.01, "%s: force on the walls = dp x inlet width (%.2g)" % (name, balance))
+    with open(os.path.join(case, "postProcessing/poreFlow/0/blockForces.dat")) as f:
+        forces = [float(l.split()[1]) for l in f if not l.startswith("#")]
+    dp = 1e-3
+    worst = max(abs(F/(dp*w) - 1) for F, w in zip(forces, widths))
+    check(worst < 0.02, "%s: each block's force dp x its width, to 2%% (%.2g)" % (name, worst))
 
 
 def disc(cx, cy, r, n=128):
@@ -153,7 +175,8 @@ def discs():
         case = make_case("discs%g" % c, blocks,
                          fluid(box="{ min (0 0); max (%g %g); }" % (cells*l, l), sides="symmetryPlane",
                                maxCellSize=l/15, cellsAcrossThroat=12, coverCell=l/4))
-        run(["nmmPoreFlow"], case, "nmmPoreFlow")
+        out = run(["nmmPoreFlow"], case, "nmmPoreFlow").stdout
+        check_forces(case, out, "discs c=%g" % c, [l]*cells)
         r = table(case)
         k_ref = l*l/drag
         err = r["permeability"]/k_ref - 1
@@ -204,11 +227,43 @@ def errors():
                  ("nmmPoreFlow", "-noRun", "-time", "7"))
 
 
+def convergence():
+    print("| case | maxCellSize | cellsAcrossThroat | cells | error | run time [s] |")
+    print("|---|---|---|---|---|---|")
+    L, h, t = 4e-3, 1e-3, 1e-3
+    blocks = [[(0, -t), (L, -t), (L, 0), (0, 0)], [(0, h), (L, h), (L, h + t), (0, h + t)]]
+    for n in (4, 8, 16, 32):
+        case = make_case("slot%d" % n, blocks, fluid(
+            box="{ min (0 %g); max (%g %g); }" % (-t, L, h + t), maxCellSize=h/n,
+            cellsAcrossThroat=n, coverCell=5e-4))
+        out = run(["nmmPoreFlow"], case, "nmmPoreFlow").stdout
+        r = table(case)
+        err = r["permeability"]*(h + 2*t)/h/(h*h/12) - 1
+        secs = float(re.search(r"run time\s+(\S+)", out).group(1))
+        print("| slot, k = h^2/12 | h/%d | %d | %d | %+.2f%% | %.1f |" % (n, n, r["cells"], 100*err, secs))
+    l = 1e-3
+    for c, drag in ((0.2, 51.53), (0.4, 217.89)):
+        a = l*math.sqrt(c/math.pi)
+        for m, n in ((8, 6), (15, 12), (25, 16)):
+            case = make_case("discs%g_%d" % (c, m), [disc((i + 0.5)*l, 0.5*l, a) for i in range(4)],
+                             fluid(box="{ min (0 0); max (%g %g); }" % (4*l, l), sides="symmetryPlane",
+                                   maxCellSize=l/m, cellsAcrossThroat=n, coverCell=l/4))
+            out = run(["nmmPoreFlow"], case, "nmmPoreFlow").stdout
+            r = table(case)
+            err = r["permeability"]/(l*l/drag) - 1
+            secs = float(re.search(r"run time\s+(\S+)", out).group(1))
+            print("| square array c = %g, Sangani & Acrivos | l/%d | %d | %d | %+.2f%% | %.1f |"
+                  % (c, m, n, r["cells"], 100*err, secs))
+
+
 def main():
     os.makedirs(WORK, exist_ok=True)
     if shutil.which("simpleFoam") is None and not os.path.exists("/usr/bin/simpleFoam"):
         raise SystemExit("OpenFOAM's simpleFoam is not installed (Debian package openfoam, "
                          "etc/debianPackages)")
+    if WHAT == "convergence":
+        convergence()
+        return
     for name, test in (("slot", slot), ("discs", discs), ("errors", errors)):
         if WHAT in ("all", name):
             test()

@@ -15,8 +15,8 @@ import sys
 from pathlib import Path
 
 
-def runReduced(argv, name, runFolders, usage, allrunArgs=("-reduced",)):
-    """Copies tutorials/paper/<name> to <workDir>/<name> without the run
+def runReduced(argv, name, runFolders, usage, allrunArgs=("-reduced",), group="paper"):
+    """Copies tutorials/<group>/<name> to <workDir>/<name> without the run
     folders (glob patterns) an earlier Allrun left, and runs
     './Allrun -reduced' (or './Allrun <allrunArgs>') there with <binDir>
     on the PATH. argv is <binDir> <projectDir> <workDir>; returns the
@@ -29,7 +29,7 @@ def runReduced(argv, name, runFolders, usage, allrunArgs=("-reduced",)):
     if case.exists():
         shutil.rmtree(case)
     case.parent.mkdir(parents=True, exist_ok=True)
-    shutil.copytree(project/"tutorials/paper"/name, case,
+    shutil.copytree(project/"tutorials"/group/name, case,
                     ignore=shutil.ignore_patterns(*runFolders, "summary.md"))
     env = dict(os.environ, NMM_PROJECT_DIR=str(project),
                PATH=str(binDir) + os.pathsep + os.environ.get("PATH", ""))

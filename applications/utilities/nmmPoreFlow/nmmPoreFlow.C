@@ -30,10 +30,12 @@ Description
     system/nmmPoreFlowDict:
 
         box             { min (0 0); max (1e-3 1e-3); }  // or:
-        fitTo           (grain.*);      // the box around these blocks
+        fitTo           (grain.*);      // the box around these blocks, and
+                                        // only they are cut out of it
         flowDirection   x;              // inlet at the box's min x
         sides           wall;           // or symmetryPlane
-        shrink          0;              // blocks scaled by (1 - shrink)
+        shrink          0;              // grains scaled by (1 - shrink)
+        shrinkBlocks    (grain.*);      // default fitTo's, or every block
         viscosity       1e-3;           // [Pa s]
         density         1000;           // [kg/m3]
         pressureDrop    1e-2;           // [Pa], inlet minus outlet
@@ -99,14 +101,18 @@ const nmm::keywordTable& keywords()
         nmm::keywordTable t("nmmPoreFlowDict", "pore-space flow through OpenFOAM");
         t.subDict("box", "the box the flow runs through: { min (x0 y0); max (x1 y1); } "
             "(or give fitTo)");
-        t.list("fitTo", "the box is the bounding box of these blocks where they are "
-            "(names or regular expressions; or give box)");
+        t.list("fitTo", "the box is the bounding box of these blocks where they are, "
+            "and only they are cut out of it: its sides stand for the container and the "
+            "platen (names or regular expressions; or give box)");
         t.word("flowDirection", "the flow runs along this axis, from the box's "
             "lower side (inlet) to its upper side (outlet)").required().choices({"x", "y"});
         t.word("sides", "the two box sides along the flow").required()
             .choices({"wall", "symmetryPlane"});
-        t.scalar("shrink", "every block is scaled about its centroid by (1 - shrink) "
-            "before it is cut out of the box (opens contacts)").required().range(0, 0.5);
+        t.scalar("shrink", "the grains (shrinkBlocks) are scaled about their centroids "
+            "by (1 - shrink) before they are cut out of the box (opens contacts)")
+            .required().range(0, 0.5);
+        t.list("shrinkBlocks", "the blocks shrink scales (names or regular expressions; "
+            "default the blocks of fitTo, or every block)");
         t.scalar("viscosity", "dynamic viscosity of the fluid", "Pa s").required().above(0);
         t.scalar("density", "density of the fluid", "kg/m3").required().above(0);
         t.scalar("pressureDrop", "inlet minus outlet pressure", "Pa").required().above(0);
@@ -126,8 +132,9 @@ const nmm::keywordTable& keywords()
 struct settings
 {
     std::optional<nmm::flowBox> box;
-    std::vector<std::string> fitTo;
+    std::vector<std::string> fitTo, shrinkBlocks;
     const nmm::entry* fitToEntry = nullptr;
+    const nmm::entry* shrinkEntry = nullptr;
     int axis = 0;
     std::string sides;
     double shrink = 0;
@@ -169,6 +176,9 @@ settings readSettings(const nmm::dictionary& dict)
         s.fitTo = dict.get<std::vector<std::string>>("fitTo");
         if (s.fitTo.empty()) throw s.fitToEntry->error("fitTo names no block");
     }
+    s.shrinkEntry = dict.findEntry("shrinkBlocks") ? &dict.lookupEntry("shrinkBlocks") : s.fitToEntry;
+    if (dict.findEntry("shrinkBlocks")) s.shrinkBlocks = dict.get<std::vector<std::string>>("shrinkBlocks");
+    else s.shrinkBlocks = s.fitTo;
     s.sides = keywords().get<std::string>(dict, "sides");
     s.shrink = keywords().get<double>(dict, "shrink");
     s.fluid.viscosity = keywords().get<double>(dict, "viscosity");
@@ -233,30 +243,56 @@ Eigen::VectorXd displacementAt(const nmm::caseFolder& c, const nmm::instant& t,
 
 // * * * * * * * * * * * * * * * * Geometry * * * * * * * * * * * * * * * * //
 
-nmm::flowBox fittedBox(const settings& s, const nmm::nmmSolidModel& model,
-    const std::vector<std::vector<nmm::poreSpace::loop>>& outlines)
+//- Per block, whether it matches one of the names (regular expressions);
+//  an entry's error for a name no block matches
+std::vector<bool> matching(const std::vector<std::string>& names, const nmm::entry& e,
+    const nmm::nmmSolidModel& model)
 {
     const auto& blocks = model.geometry().blocks();
-    Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
-    Eigen::Vector2d hi = -lo;
-    for (const auto& name : s.fitTo)
+    std::vector<bool> match(blocks.size(), false);
+    for (const auto& name : names)
     {
         std::optional<nmm::keyPattern> pattern;
         try { pattern.emplace(name); }
-        catch (const std::invalid_argument& e) { throw s.fitToEntry->error(e.what()); }
+        catch (const std::invalid_argument& err) { throw e.error(err.what()); }
         bool any = false;
         for (std::size_t b = 0; b < blocks.size(); ++b)
         {
-            if (!pattern->matches(blocks[b].name())) continue;
-            any = true;
-            for (const auto& x : outlines[b].front()) { lo = lo.cwiseMin(x); hi = hi.cwiseMax(x); }
+            if (pattern->matches(blocks[b].name())) match[b] = any = true;
         }
-        if (!any) throw s.fitToEntry->error("fitTo: no block matches '" + name + "'");
+        if (!any) throw e.error(e.keyword() + ": no block matches '" + name + "'");
+    }
+    return match;
+}
+
+
+nmm::flowBox fittedBox(const settings& s, const nmm::nmmSolidModel& model,
+    const std::vector<std::vector<nmm::poreSpace::loop>>& outlines)
+{
+    const auto fit = matching(s.fitTo, *s.fitToEntry, model);
+    Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector2d hi = -lo;
+    for (std::size_t b = 0; b < fit.size(); ++b)
+    {
+        if (!fit[b]) continue;
+        for (const auto& x : outlines[b].front()) { lo = lo.cwiseMin(x); hi = hi.cwiseMax(x); }
     }
     nmm::flowBox box;
     box.min = lo;
     box.max = hi;
     return box;
+}
+
+
+std::vector<double> shrinkFactors(const settings& s, const nmm::nmmSolidModel& model)
+{
+    const std::size_t n = model.geometry().blocks().size();
+    if (s.shrink == 0) return {};
+    if (!s.shrinkEntry) return std::vector<double>(n, s.shrink);
+    const auto which = matching(s.shrinkBlocks, *s.shrinkEntry, model);
+    std::vector<double> f(n, 0);
+    for (std::size_t b = 0; b < n; ++b) if (which[b]) f[b] = s.shrink;
+    return f;
 }
 
 
@@ -308,6 +344,20 @@ void writeTable(const fs::path& file, const std::string& timeName, const outcome
 }
 
 
+void writeForces(const fs::path& file, const std::string& timeName,
+    const std::vector<std::string>& names, const nmm::poreFlowCase::wallForces& F)
+{
+    std::ofstream os(file);
+    os << "# nmmPoreFlow at time " << timeName << ": the fluid's force on each block "
+          "(pressure and wall shear stress) [N/m]\n# block Fx Fy\n" << std::setprecision(10);
+    for (std::size_t b = 0; b < names.size(); ++b)
+    {
+        os << names[b] << ' ' << F.block[b].x() << ' ' << F.block[b].y() << '\n';
+    }
+    if (!os.flush()) throw nmm::fatalError("could not write " + file.string());
+}
+
+
 void row(const std::string& name, const std::string& value)
 {
     std::cout << "    " << std::left << std::setw(24) << name << std::right << value << '\n';
@@ -345,14 +395,21 @@ int run(int argc, char* argv[])
     const auto start = std::chrono::steady_clock::now();
     auto model = nmm::nmmSolidModel::New(runCase);
     const Eigen::VectorXd D = displacementAt(runCase, time, *model);
-    const auto outlines = nmm::blockOutlines(*model).at(D);
+    auto outlines = nmm::blockOutlines(*model).at(D);
     nmm::flowBox box = s.box ? *s.box : fittedBox(s, *model, outlines);
+    if (!s.box)
+    {
+        // The sample alone: a container pressed against it would cover
+        // the inlet or the outlet by the contacts' overlap
+        const auto sample = matching(s.fitTo, *s.fitToEntry, *model);
+        for (std::size_t b = 0; b < outlines.size(); ++b) if (!sample[b]) outlines[b].clear();
+    }
     box.axis = s.axis;
     std::cout << "Time " << time.name << ": box (" << box.min.transpose() << ")-("
         << box.max.transpose() << "), flow along " << (s.axis == 0 ? "x" : "y") << "\n\n";
 
-    const double porosity = nmm::poreDomain::cut(outlines, box, 0).area/box.area();
-    const nmm::poreDomain domain = nmm::poreDomain::cut(outlines, box, s.shrink);
+    const double porosity = nmm::poreDomain::cut(outlines, box).area/box.area();
+    const nmm::poreDomain domain = nmm::poreDomain::cut(outlines, box, shrinkFactors(s, *model));
     nmm::poreMesh mesh;
     try { mesh = nmm::poreMesh::of(domain, s.mesh); }
     catch (const std::runtime_error& e)
@@ -389,6 +446,8 @@ int run(int argc, char* argv[])
     const double U = q/(box.width()*flowPorosity);
     const outcome o{porosity, flowPorosity, q, k, s.fluid.density*U*d/s.fluid.viscosity,
         mesh.throat.width, mesh.cells.size(), mesh.throat.cellsAcross};
+    const auto F = flow.forces(mesh, writer, s.fluid.density, names.size());
+    const double pushed = s.fluid.pressureDrop*F.inletWidth;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     for (const auto& w : r.meshWarnings)
@@ -402,6 +461,9 @@ int run(int argc, char* argv[])
     row("mass balance", text(std::abs(r.outletFlowRate - r.inletFlowRate)/std::abs(r.outletFlowRate))
         + " (|Qout - Qin|/Qout)");
     row("permeability", text(k, "m2"));
+    row("force on the walls", "(" + text(F.total.x()) + " " + text(F.total.y()) + ") N/m");
+    row("dp times the inlet", text(pushed, "N/m") + " (balance "
+        + text(std::abs(F.total[box.axis] - pushed)/pushed) + ")");
     row("Reynolds number", text(o.reynolds));
     row("run time", text(seconds, "s"));
     if (o.reynolds > 1)
@@ -411,6 +473,7 @@ int run(int argc, char* argv[])
     }
     const fs::path table = runCase.path()/"postProcessing"/"poreFlow"/time.name/"poreFlow.dat";
     writeTable(table, time.name, o);
+    writeForces(table.parent_path()/"blockForces.dat", time.name, names, F);
     std::cout << "\nWritten " << table.lexically_relative(runCase.path()).string() << "\n\nEnd\n";
     return 0;
 }

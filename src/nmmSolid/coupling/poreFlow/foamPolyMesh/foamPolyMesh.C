@@ -115,11 +115,7 @@ std::vector<patch> patches(const poreMesh& m, const std::string& sidesType)
         {"walls", "wall", "1(wall)", {}, {}}, {"lowerSide", sidesType, sides, {}, {}},
         {"upperSide", sidesType, sides, {}, {}}, {"frontAndBack", "empty", "1(empty)", {}, {}}};
     const int n = int(m.points.size());
-    std::vector<poreMesh::boundaryFace> sorted = m.boundary;
-    // Wall faces block by block
-    std::stable_sort(sorted.begin(), sorted.end(),
-        [](const auto& a, const auto& b) { return a.label < b.label; });
-    for (const auto& f : sorted)
+    for (const auto& f : foamPolyMesh::writtenOrder(m))
     {
         const int k = f.label == poreDomain::inlet ? 0 : f.label == poreDomain::outlet ? 1
             : f.label == poreDomain::lowerSide ? 3 : f.label == poreDomain::upperSide ? 4 : 2;
@@ -156,6 +152,24 @@ std::string boundaryFile(const std::vector<patch>& p, int start)
 }
 
 } // End anonymous namespace
+
+
+std::vector<poreMesh::boundaryFace> foamPolyMesh::writtenOrder(const poreMesh& m)
+{
+    std::vector<poreMesh::boundaryFace> sorted = m.boundary;
+    // Wall faces block by block
+    std::stable_sort(sorted.begin(), sorted.end(),
+        [](const auto& a, const auto& b) { return a.label < b.label; });
+    return sorted;
+}
+
+
+std::vector<poreMesh::boundaryFace> foamPolyMesh::patchFaces(const poreMesh& m, const std::string& patch)
+{
+    std::vector<poreMesh::boundaryFace> faces;
+    for (const auto& f : writtenOrder(m)) if (poreDomain::patchName(f.label) == patch) faces.push_back(f);
+    return faces;
+}
 
 
 std::string foamPolyMesh::header

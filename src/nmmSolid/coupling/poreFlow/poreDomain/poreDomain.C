@@ -46,17 +46,16 @@ Eigen::Vector2d centroid(const std::vector<poreSpace::loop>& loops)
 std::vector<std::vector<poreSpace::loop>> shrunk
 (
     std::vector<std::vector<poreSpace::loop>> blocks,
-    double shrink
+    const std::vector<double>& shrink
 )
 {
-    if (shrink == 0) return blocks;
-    for (auto& b : blocks)
+    for (std::size_t b = 0; b < blocks.size() && b < shrink.size(); ++b)
     {
-        if (b.empty()) continue;
-        const Eigen::Vector2d c = centroid(b);
-        for (auto& l : b)
+        if (blocks[b].empty() || shrink[b] == 0) continue;
+        const Eigen::Vector2d c = centroid(blocks[b]);
+        for (auto& l : blocks[b])
         {
-            for (auto& x : l) x = c + (1 - shrink)*(x - c);
+            for (auto& x : l) x = c + (1 - shrink[b])*(x - c);
         }
     }
     return blocks;
@@ -131,7 +130,7 @@ poreDomain poreDomain::cut
 (
     const std::vector<std::vector<poreSpace::loop>>& blocks,
     const flowBox& box,
-    double shrink
+    const std::vector<double>& shrink
 )
 {
     const auto solid = shrunk(blocks, shrink);

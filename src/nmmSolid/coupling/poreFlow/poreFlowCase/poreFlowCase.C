@@ -1,6 +1,7 @@
 #include "nmmSolid/coupling/poreFlow/poreFlowCase/poreFlowCase.H"
 
 #include "nmmSolid/global/fatalError/fatalError.H"
+#include "nmmSolid/io/dictionary/dictionary.H"
 
 #include <cstdlib>
 #include <fstream>
@@ -87,7 +88,118 @@ std::vector<std::string> meshFailures(const std::string& log)
     return failed;
 }
 
+//- The newest numbered time folder of the case
+fs::path latestTime(const fs::path& dir)
+{
+    fs::path latest;
+    double value = -1;
+    for (const auto& e : fs::directory_iterator(dir))
+    {
+        const auto name = e.path().filename().string();
+        char* end = nullptr;
+        const double v = std::strtod(name.c_str(), &end);
+        if (e.is_directory() && end && *end == '\0' && !name.empty() && v > value)
+        {
+            value = v;
+            latest = e.path();
+        }
+    }
+    return latest;
+}
+
+
+//- The numbers of a field entry as OpenFOAM writes it: "uniform x" or
+//  "nonuniform List<type> n (...)", n values of the given components
+std::vector<double> fieldValues(const entry& e, const fs::path& file, std::size_t components,
+    std::size_t n)
+{
+    std::vector<double> numbers;
+    bool uniform = false, counted = false;
+    for (const token& t : e.stream())
+    {
+        if (t.isWord("uniform")) uniform = true;
+        if (!t.isNumber()) continue;
+        // A nonuniform list starts with its length
+        if (!uniform && !counted && t.type == token::kind::integer) { counted = true; continue; }
+        numbers.push_back(t.scalar);
+    }
+    if (uniform && numbers.size() == components)
+    {
+        std::vector<double> all;
+        for (std::size_t i = 0; i < n; ++i) all.insert(all.end(), numbers.begin(), numbers.end());
+        return all;
+    }
+    if (numbers.size() != components*n)
+    {
+        throw fatalError(file.string() + ": '" + e.keyword() + "' has " + std::to_string(numbers.size())
+            + " numbers, not " + std::to_string(components*n));
+    }
+    return numbers;
+}
+
+
+//- A field's values on the faces of a patch: its "value", or where the
+//  condition writes none (zeroGradient), the values of the faces' cells
+std::vector<double> patchValues(const fs::path& file, const std::string& patch,
+    std::size_t components, const std::vector<poreMesh::boundaryFace>& faces, std::size_t nCells)
+{
+    if (!fs::is_regular_file(file)) throw fatalError("OpenFOAM wrote no " + file.string());
+    const dictionary field = dictionary::read(file);
+    if (const entry* v = field.subDict("boundaryField").subDict(patch).findEntry("value"))
+    {
+        return fieldValues(*v, file, components, faces.size());
+    }
+    const auto cells = fieldValues(field.lookupEntry("internalField"), file, components, nCells);
+    std::vector<double> values;
+    for (const auto& f : faces)
+    {
+        const auto c = std::size_t(f.cell)*components;
+        values.insert(values.end(), cells.begin() + long(c), cells.begin() + long(c + components));
+    }
+    return values;
+}
+
 } // End anonymous namespace
+
+
+poreFlowCase::wallForces poreFlowCase::forces
+(
+    const poreMesh& m,
+    const foamPolyMesh& writer,
+    double density,
+    std::size_t nBlocks
+) const
+{
+    const fs::path time = latestTime(dir_);
+    wallForces f;
+    f.block.assign(nBlocks, Eigen::Vector2d::Zero());
+    std::vector<std::string> walls{"walls"};
+    if (writer.sidesType == "wall") walls.insert(walls.end(), {"lowerSide", "upperSide"});
+    for (const auto& patch : walls)
+    {
+        const auto faces = foamPolyMesh::patchFaces(m, patch);
+        if (faces.empty()) continue;
+        const auto p = patchValues(time/"p", patch, 1, faces, m.cells.size());
+        const auto tau = patchValues(time/"wallShearStress", patch, 3, faces, m.cells.size());
+        for (std::size_t i = 0; i < faces.size(); ++i)
+        {
+            const Eigen::Vector2d ab = m.points[std::size_t(faces[i].b)] - m.points[std::size_t(faces[i].a)];
+            // Per metre of depth: the face's length, not its area
+            const Eigen::Vector2d n(ab.y()/ab.norm(), -ab.x()/ab.norm());
+            // OpenFOAM's wallShearStress is what the wall exerts on the
+            // fluid, -n.R_eff: the fluid's on the wall is its opposite
+            const Eigen::Vector2d t(tau[3*i], tau[3*i + 1]);
+            const Eigen::Vector2d F = density*(p[i]*n - t)*ab.norm();
+            f.total += F;
+            if (faces[i].label >= 0) f.block[std::size_t(faces[i].label)] += F;
+        }
+    }
+    for (const auto& face : foamPolyMesh::patchFaces(m, "inlet"))
+    {
+        f.inletWidth += (m.points[std::size_t(face.b)] - m.points[std::size_t(face.a)]).norm();
+    }
+    return f;
+}
 
 
 fs::path poreFlowCase::defaultTemplate()
