@@ -19,14 +19,13 @@ binaries (Debian's openfoam package, v1912).
             F/(mu U) = 51.53 and 217.89, four digits): k = l^2/(F/(mu U)),
             within 2% (the inlet and outlet planes are set at uniform
             pressure, which a periodic array has only approximately); the
-            force balance as for the slot, a quarter on each disc
+            force balance as for the slot, a quarter of it on each disc
   errors    broken input: an unknown keyword ("did you mean"), a missing
             physics keyword, a box that the blocks close, a time that was
             not written; each an error naming the file or time, exit 1
 
-  convergence  not a test: the table of docs/verification/README.md
-            (poreFlow), the error of both cases against the cells and the
-            run time
+  convergence  not a test: the table of docs/verification/poreFlow.md,
+            the error of both cases against the cells and the run time
 
 Usage: poreFlow.py <binDir> <projectDir> <workDir> [slot|discs|errors|convergence]
 """
@@ -151,7 +150,8 @@ def slot():
 def check_forces(case, out, name, widths):
     """Steady flow: the fluid's force on the walls along the flow is the
     pressure drop times the inlet's width (momentum balance), to 1%; each
-    block carries dp times its share of the width"""
+    block carries dp times its share of the width (widths: per block; the
+    slot's two walls half each, the row's discs a quarter each)"""
     balance = float(re.search(r"dp times the inlet.*\(balance (\S+)\)", out).group(1))
     check(balance < 0.01, "%s: force on the walls = dp x inlet width (%.2g)" % (name, balance))
     with open(os.path.join(case, "postProcessing/poreFlow/0/blockForces.dat")) as f:
@@ -176,7 +176,7 @@ def discs():
                          fluid(box="{ min (0 0); max (%g %g); }" % (cells*l, l), sides="symmetryPlane",
                                maxCellSize=l/15, cellsAcrossThroat=12, coverCell=l/4))
         out = run(["nmmPoreFlow"], case, "nmmPoreFlow").stdout
-        check_forces(case, out, "discs c=%g" % c, [l]*cells)
+        check_forces(case, out, "discs c=%g" % c, [l/cells]*cells)
         r = table(case)
         k_ref = l*l/drag
         err = r["permeability"]/k_ref - 1
@@ -228,19 +228,21 @@ def errors():
 
 
 def convergence():
-    print("| case | maxCellSize | cellsAcrossThroat | cells | error | run time [s] |")
-    print("|---|---|---|---|---|---|")
+    print("| case | maxCellSize | cellsAcrossThroat | lloydIterations | cells | error | run time [s] |")
+    print("|---|---|---|---|---|---|---|")
     L, h, t = 4e-3, 1e-3, 1e-3
     blocks = [[(0, -t), (L, -t), (L, 0), (0, 0)], [(0, h), (L, h), (L, h + t), (0, h + t)]]
-    for n in (4, 8, 16, 32):
-        case = make_case("slot%d" % n, blocks, fluid(
-            box="{ min (0 %g); max (%g %g); }" % (-t, L, h + t), maxCellSize=h/n,
-            cellsAcrossThroat=n, coverCell=5e-4))
-        out = run(["nmmPoreFlow"], case, "nmmPoreFlow").stdout
-        r = table(case)
-        err = r["permeability"]*(h + 2*t)/h/(h*h/12) - 1
-        secs = float(re.search(r"run time\s+(\S+)", out).group(1))
-        print("| slot, k = h^2/12 | h/%d | %d | %d | %+.2f%% | %.1f |" % (n, n, r["cells"], 100*err, secs))
+    for lloyd in (0, 20):
+        for n in (4, 8, 16, 32):
+            case = make_case("slot%d_%d" % (n, lloyd), blocks, fluid(
+                box="{ min (0 %g); max (%g %g); }" % (-t, L, h + t), maxCellSize=h/n,
+                cellsAcrossThroat=n, coverCell=5e-4, lloydIterations=lloyd))
+            out = run(["nmmPoreFlow"], case, "nmmPoreFlow").stdout
+            r = table(case)
+            err = r["permeability"]*(h + 2*t)/h/(h*h/12) - 1
+            secs = float(re.search(r"run time\s+(\S+)", out).group(1))
+            print("| slot, k = h^2/12 | h/%d | %d | %d | %d | %+.3f%% | %.1f |"
+                  % (n, n, lloyd, r["cells"], 100*err, secs))
     l = 1e-3
     for c, drag in ((0.2, 51.53), (0.4, 217.89)):
         a = l*math.sqrt(c/math.pi)
@@ -252,7 +254,7 @@ def convergence():
             r = table(case)
             err = r["permeability"]/(l*l/drag) - 1
             secs = float(re.search(r"run time\s+(\S+)", out).group(1))
-            print("| square array c = %g, Sangani & Acrivos | l/%d | %d | %d | %+.2f%% | %.1f |"
+            print("| square array c = %g, Sangani & Acrivos | l/%d | %d | 20 | %d | %+.2f%% | %.1f |"
                   % (c, m, n, r["cells"], 100*err, secs))
 
 

@@ -30,8 +30,7 @@ Description
     system/nmmPoreFlowDict:
 
         box             { min (0 0); max (1e-3 1e-3); }  // or:
-        fitTo           (grain.*);      // the box around these blocks, and
-                                        // only they are cut out of it
+        fitTo           (grain.*);      // the box around these blocks
         flowDirection   x;              // inlet at the box's min x
         sides           wall;           // or symmetryPlane
         shrink          0;              // grains scaled by (1 - shrink)
@@ -42,6 +41,7 @@ Description
         maxCellSize     2e-5;           // [m]
         minCellSize     1e-6;           // [m], default maxCellSize/50
         cellsAcrossThroat 8;
+        lloydIterations 20;
         template        "<case>/system/poreFlowTemplate"; // optional
 
 Usage
@@ -101,9 +101,10 @@ const nmm::keywordTable& keywords()
         nmm::keywordTable t("nmmPoreFlowDict", "pore-space flow through OpenFOAM");
         t.subDict("box", "the box the flow runs through: { min (x0 y0); max (x1 y1); } "
             "(or give fitTo)");
-        t.list("fitTo", "the box is the bounding box of these blocks where they are, "
-            "and only they are cut out of it: its sides stand for the container and the "
-            "platen (names or regular expressions; or give box)");
+        t.list("fitTo", "the box is the bounding box of these blocks where they are; "
+            "the other blocks (container, platen) are cut out of it too, but kept off "
+            "the inlet and the outlet by 1e-3 of its length (names or regular "
+            "expressions; or give box)");
         t.word("flowDirection", "the flow runs along this axis, from the box's "
             "lower side (inlet) to its upper side (outlet)").required().choices({"x", "y"});
         t.word("sides", "the two box sides along the flow").required()
@@ -121,6 +122,8 @@ const nmm::keywordTable& keywords()
             "maxCellSize/50)", "m").above(0);
         t.integer("cellsAcrossThroat", "cells across a throat of the pore space")
             .defaultValue(8).atLeast(1);
+        t.integer("lloydIterations", "Lloyd steps that move the mesh's vertices towards "
+            "their cells' centroids (0: none)").defaultValue(20).atLeast(0);
         t.fileName("template", "the OpenFOAM case template (0/, constant/, system/); "
             "default the project's etc/templates/poreFlow");
         return t;
@@ -192,6 +195,7 @@ settings readSettings(const nmm::dictionary& dict)
         throw dict.lookupEntry("minCellSize").error("minCellSize is larger than maxCellSize");
     }
     s.mesh.cellsAcross = int(keywords().get<long long>(dict, "cellsAcrossThroat"));
+    s.mesh.lloydIterations = int(keywords().get<long long>(dict, "lloydIterations"));
     s.templateDir = dict.findEntry("template")
         ? keywords().getFileName(dict, "template") : nmm::poreFlowCase::defaultTemplate();
     return s;
@@ -395,21 +399,21 @@ int run(int argc, char* argv[])
     const auto start = std::chrono::steady_clock::now();
     auto model = nmm::nmmSolidModel::New(runCase);
     const Eigen::VectorXd D = displacementAt(runCase, time, *model);
-    auto outlines = nmm::blockOutlines(*model).at(D);
+    const auto outlines = nmm::blockOutlines(*model).at(D);
     nmm::flowBox box = s.box ? *s.box : fittedBox(s, *model, outlines);
+    std::vector<bool> holders;
     if (!s.box)
     {
-        // The sample alone: a container pressed against it would cover
-        // the inlet or the outlet by the contacts' overlap
-        const auto sample = matching(s.fitTo, *s.fitToEntry, *model);
-        for (std::size_t b = 0; b < outlines.size(); ++b) if (!sample[b]) outlines[b].clear();
+        holders = matching(s.fitTo, *s.fitToEntry, *model);
+        holders.flip();
     }
     box.axis = s.axis;
     std::cout << "Time " << time.name << ": box (" << box.min.transpose() << ")-("
         << box.max.transpose() << "), flow along " << (s.axis == 0 ? "x" : "y") << "\n\n";
 
-    const double porosity = nmm::poreDomain::cut(outlines, box).area/box.area();
-    const nmm::poreDomain domain = nmm::poreDomain::cut(outlines, box, shrinkFactors(s, *model));
+    const double porosity = nmm::poreDomain::cut(outlines, box, {}, holders).area/box.area();
+    const nmm::poreDomain domain = nmm::poreDomain::cut(outlines, box, shrinkFactors(s, *model),
+        holders);
     nmm::poreMesh mesh;
     try { mesh = nmm::poreMesh::of(domain, s.mesh); }
     catch (const std::runtime_error& e)

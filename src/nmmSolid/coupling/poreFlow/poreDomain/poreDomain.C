@@ -110,6 +110,31 @@ poreDomain::loop labelled(const exactPolygon& p, const flowBox& box, const wallS
     return l;
 }
 
+//- The blocks that hold a sample, less a strip at the inlet and at the
+//  outlet: a container wall pressed against the sample's first grains,
+//  overlapping the box by the contact's penetration, would otherwise cover
+//  the inlet
+CGAL::Polygon_set_2<exactKernel> cutBack(const std::vector<exactPolygonWithHoles>& holding,
+    const flowBox& box)
+{
+    CGAL::Polygon_set_2<exactKernel> set;
+    set.join(holding.begin(), holding.end());
+    const int a = box.axis, s = 1 - a;
+    const double gap = 1e-3*box.length(), far = box.width();
+    Eigen::Vector2d lo, hi;
+    lo[a] = box.min[a] + gap;
+    hi[a] = box.max[a] - gap;
+    lo[s] = box.min[s] - far;
+    hi[s] = box.max[s] + far;
+    exactPolygon strip;
+    strip.push_back(point(lo.x(), lo.y()));
+    strip.push_back(point(hi.x(), lo.y()));
+    strip.push_back(point(hi.x(), hi.y()));
+    strip.push_back(point(lo.x(), hi.y()));
+    set.intersection(strip);
+    return set;
+}
+
 } // End anonymous namespace
 
 
@@ -130,7 +155,8 @@ poreDomain poreDomain::cut
 (
     const std::vector<std::vector<poreSpace::loop>>& blocks,
     const flowBox& box,
-    const std::vector<double>& shrink
+    const std::vector<double>& shrink,
+    const std::vector<bool>& holders
 )
 {
     const auto solid = shrunk(blocks, shrink);
@@ -143,12 +169,21 @@ poreDomain poreDomain::cut
         b.push_back(point(box.min.x(), box.max.y()));
         pores.insert(b);
     }
-    const auto shapes = exactBlocks(solid);
+    std::vector<std::vector<poreSpace::loop>> sample = solid, held(solid.size());
+    for (std::size_t b = 0; b < holders.size() && b < solid.size(); ++b)
+    {
+        if (holders[b]) std::swap(sample[b], held[b]);
+    }
+    const auto shapes = exactBlocks(sample);
     if (!shapes.empty())
     {
         CGAL::Polygon_set_2<exactKernel> blocksSet;
         blocksSet.join(shapes.begin(), shapes.end());
         pores.difference(blocksSet);
+    }
+    if (const auto holding = exactBlocks(held); !holding.empty())
+    {
+        pores.difference(cutBack(holding, box));
     }
     std::vector<exactPolygonWithHoles> pieces;
     pores.polygons_with_holes(std::back_inserter(pieces));

@@ -4,7 +4,9 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Delaunay_mesh_vertex_base_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/lloyd_optimize_mesh_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_2/Face_badness.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
@@ -28,7 +30,7 @@ using point = K::Point_2;
 
 // The triangulation that is refined into the mesh
 using meshFace = CGAL::Delaunay_mesh_face_base_2<K>;
-using meshTds = CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_2<K>, meshFace>;
+using meshTds = CGAL::Triangulation_data_structure_2<CGAL::Delaunay_mesh_vertex_base_2<K>, meshFace>;
 using meshCdt = CGAL::Constrained_Delaunay_triangulation_2<K, meshTds, CGAL::Exact_predicates_tag>;
 
 // The triangulation of the boundary alone, each face with its width
@@ -606,6 +608,10 @@ poreMesh poreMesh::of(const poreDomain& original, const settings& s)
     markDomain(cdt, [](meshCdt::Face_handle f, bool in) { f->set_in_domain(in); });
     mesher.init(true);
     mesher.refine_mesh();
+    if (s.lloydIterations > 0)
+    {
+        CGAL::lloyd_optimize_mesh_2(cdt, CGAL::parameters::max_iteration_number = s.lloydIterations);
+    }
 
     const regions r = findRegions(cdt, edges);
     poreMesh m;
