@@ -191,6 +191,7 @@ poreDomain poreDomain::cut
     const wallSearch walls = shapes.empty()
         ? wallSearch({{box.min, box.min, lowerSide}}) : blockWalls(solid);
     poreDomain result;
+    result.holders = holders;
     for (const auto& piece : pieces)
     {
         result.loops.push_back(labelled(piece.outer_boundary(), box, walls));

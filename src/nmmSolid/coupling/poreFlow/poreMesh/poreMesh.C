@@ -38,6 +38,9 @@ struct widthInfo
 {
     bool inDomain = false;
     double width = std::numeric_limits<double>::infinity();
+    //- The narrowest of the face's gaps that has a sample block on one
+    //  side (a throat), and its ends
+    double throat = std::numeric_limits<double>::infinity();
     Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero();
 };
 using sizeFace = CGAL::Triangulation_face_base_with_info_2<widthInfo, K,
@@ -233,8 +236,18 @@ bool disjoint(const std::set<int>& a, const std::set<int>& b)
 
 
 //- Each domain face's width (see the Description)
-void setWidths(sizeCdt& cdt, const wallSearch& edges)
+void setWidths(sizeCdt& cdt, const wallSearch& edges, const std::vector<bool>& holders)
 {
+    auto sample = [&](int l)
+    {
+        return l >= 0 && !(std::size_t(l) < holders.size() && holders[std::size_t(l)]);
+    };
+    auto anySample = [&](const std::set<int>& a, int l)
+    {
+        if (sample(l)) return true;
+        for (int x : a) if (sample(x)) return true;
+        return false;
+    };
     const auto labels = vertexLabels(cdt, edges);
     auto labelsOf = [&](sizeCdt::Vertex_handle v) -> const std::set<int>&
     {
@@ -246,16 +259,19 @@ void setWidths(sizeCdt& cdt, const wallSearch& edges)
     {
         if (!f->info().inDomain) continue;
         auto& w = f->info();
-        auto consider = [&](const Eigen::Vector2d& p, const Eigen::Vector2d& q)
+        auto consider = [&](const Eigen::Vector2d& p, const Eigen::Vector2d& q, bool throat)
         {
             const double d = (q - p).norm();
-            if (d < w.width) { w.width = d; w.from = p; w.to = q; }
+            w.width = std::min(w.width, d);
+            if (throat && d < w.throat) { w.throat = d; w.from = p; w.to = q; }
         };
         for (int j = 0; j < 3; ++j)
         {
             const auto u = f->vertex(cdt.ccw(j)), v = f->vertex(cdt.cw(j));
             if (labelsOf(u).empty() || labelsOf(v).empty() || !disjoint(labelsOf(u), labelsOf(v))) continue;
-            consider(vec(u->point()), vec(v->point()));
+            const int lv = *labelsOf(v).begin();
+            consider(vec(u->point()), vec(v->point()),
+                anySample(labelsOf(u), lv) || anySample(labelsOf(v), lv));
         }
         for (int j = 0; j < 3; ++j)
         {
@@ -265,7 +281,7 @@ void setWidths(sizeCdt& cdt, const wallSearch& edges)
             const int l = edges.closest(0.5*(a + b)).label;
             if (!isWall(l) || labelsOf(f->vertex(j)).empty() || labelsOf(f->vertex(j)).count(l)) continue;
             const Eigen::Vector2d x = vec(f->vertex(j)->point());
-            consider(x, closestOnSegment(x, a, b));
+            consider(x, closestOnSegment(x, a, b), anySample(labelsOf(f->vertex(j)), l));
         }
     }
 }
@@ -592,7 +608,7 @@ poreMesh poreMesh::of(const poreDomain& original, const settings& s)
     sizeCdt sizing;
     insertLoops(sizing, domain);
     markDomain(sizing, [](sizeCdt::Face_handle f, bool in) { f->info().inDomain = in; });
-    setWidths(sizing, edges);
+    setWidths(sizing, edges, domain.holders);
 
     sizeCdt::Face_handle hint;
     sizeFieldCriteria::sizeFunction size = [&](const Eigen::Vector2d& x)
@@ -611,6 +627,12 @@ poreMesh poreMesh::of(const poreDomain& original, const settings& s)
     if (s.lloydIterations > 0)
     {
         CGAL::lloyd_optimize_mesh_2(cdt, CGAL::parameters::max_iteration_number = s.lloydIterations);
+        // The moved vertices may encroach on boundary edges: refined
+        // again, every boundary triangle has its circumcentre inside
+        markDomain(cdt, [](meshCdt::Face_handle f, bool in) { f->set_in_domain(in); });
+        CGAL::Delaunay_mesher_2<meshCdt, sizeFieldCriteria> again(cdt, sizeFieldCriteria(0.125, size));
+        again.init(true);
+        again.refine_mesh();
     }
 
     const regions r = findRegions(cdt, edges);
@@ -642,16 +664,16 @@ poreMesh poreMesh::of(const poreDomain& original, const settings& s)
     std::vector<const widthInfo*> widths;
     for (auto f = sizing.finite_faces_begin(); f != sizing.finite_faces_end(); ++f)
     {
-        if (f->info().inDomain && std::isfinite(f->info().width)) widths.push_back(&f->info());
+        if (f->info().inDomain && std::isfinite(f->info().throat)) widths.push_back(&f->info());
     }
     std::sort(widths.begin(), widths.end(),
-        [](const widthInfo* a, const widthInfo* b) { return a->width < b->width; });
+        [](const widthInfo* a, const widthInfo* b) { return a->throat < b->throat; });
     for (const widthInfo* w : widths)
     {
         const Eigen::Vector2d mid = 0.5*(w->from + w->to);
         const auto f = cdt.locate(point(mid.x(), mid.y()));
         if (cdt.is_infinite(f) || !cellOf.count(f)) continue;
-        m.throat = {true, w->width, w->from, w->to, cellsCrossed(cdt, w->from, w->to, dual)};
+        m.throat = {true, w->throat, w->from, w->to, cellsCrossed(cdt, w->from, w->to, dual)};
         break;
     }
     return m;
