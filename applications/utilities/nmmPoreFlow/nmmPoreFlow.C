@@ -384,6 +384,17 @@ int run(int argc, char* argv[])
     args.addOption("time", "t", "the written time (its name or value)");
     args.addBoolOption("latestTime", "the last written time (the default)");
     args.addBoolOption("noRun", "write the OpenFOAM case and stop");
+    args.setDocumentation
+    (
+        "Reads system/nmmPoreFlowDict and the blocks where they are at the chosen "
+        "written time, cuts the pore space out of the box, triangulates it (CGAL) "
+        "into Voronoi-dual cells, writes it with the template's schemes and "
+        "tolerances as the OpenFOAM case poreFlow/<time>/, runs checkMesh and "
+        "simpleFoam there (logs log.checkMesh, log.simpleFoam), and prints and "
+        "writes postProcessing/poreFlow/<time>/poreFlow.dat (porosity, flow rate, "
+        "permeability, Reynolds number) and blockForces.dat (the fluid's force on "
+        "each block). docs/coupling.md explains the coupling."
+    );
     args.addKeywordHelp("system/nmmPoreFlowDict", keywords());
     args.addKeywordHelp("system/nmmPoreFlowDict, 'box'", boxKeywords());
     if (args.parse(argc, argv) == nmm::argList::parseResult::done) return 0;
