@@ -514,85 +514,195 @@ void mergeCoincident
 }
 
 
+//- The dual of the kept triangles (see makeDual)
+class dualBuilder
+{
+    using vertex = meshCdt::Vertex_handle;
+    using faceHandle = meshCdt::Face_handle;
+
+    const meshCdt& cdt_;
+    const std::map<faceHandle, int>& cellOf_;
+    const wallSearch& edges_;
+    std::map<faceHandle, int> centre_;
+    std::map<std::pair<vertex, vertex>, int> midpoint_;
+    std::map<vertex, int> corner_;
+
+    int add(const Eigen::Vector2d& x)
+    {
+        d.points.push_back(x);
+        return int(d.points.size()) - 1;
+    }
+
+    int mid(vertex u, vertex v)
+    {
+        const auto key = u < v ? std::make_pair(u, v) : std::make_pair(v, u);
+        const auto it = midpoint_.find(key);
+        if (it != midpoint_.end()) return it->second;
+        return midpoint_[key] = add(0.5*(vec(u->point()) + vec(v->point())));
+    }
+
+    int label(vertex u, vertex v) const
+    {
+        return edges_.closest(0.5*(vec(u->point()) + vec(v->point()))).label;
+    }
+
+    bool kept(faceHandle f) const { return cellOf_.count(f) > 0; }
+
+    //- The cell of the fan of kept triangles around v from around[i0] on:
+    //  v, the midpoint of the boundary edge before the fan, the fan's
+    //  circumcentres, the midpoint of the boundary edge after it
+    void fanCell(vertex v, const std::vector<faceHandle>& around, std::size_t i0)
+    {
+        const std::size_t n = around.size();
+        const auto f0 = around[i0];
+        const auto w0 = f0->vertex(cdt_.ccw(f0->index(v)));
+        const int vi = corner_.count(v) ? corner_[v] : (corner_[v] = add(vec(v->point())));
+        std::vector<int> cell{vi, mid(v, w0)};
+        std::size_t i = i0;
+        for (; kept(around[i%n]); ++i) cell.push_back(centre_.at(around[i%n]));
+        const auto fk = around[(i + n - 1)%n];
+        const auto wk = fk->vertex(cdt_.cw(fk->index(v)));
+        cell.push_back(mid(v, wk));
+        const int c = int(d.cells.size());
+        d.boundary.push_back({vi, cell[1], c, label(v, w0)});
+        d.boundary.push_back({cell.back(), vi, c, label(wk, v)});
+        d.cells.push_back(std::move(cell));
+    }
+
+    //- The cell or cells of vertex v: inside, the circumcentres around it;
+    //  on the boundary, one cell per fan of kept triangles
+    void cellsOf(vertex v)
+    {
+        std::vector<faceHandle> around;
+        auto c = cdt_.incident_faces(v), end = c;
+        do { around.push_back(c); } while (++c != end);
+        const std::size_t n = around.size();
+        bool inside = true;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            if (kept(around[i]) && !kept(around[(i + n - 1)%n]))
+            {
+                fanCell(v, around, i);
+                inside = false;
+            }
+        }
+        if (!inside) return;
+        std::vector<int> cell;
+        for (const auto& f : around) cell.push_back(centre_.at(f));
+        d.cells.push_back(std::move(cell));
+    }
+
+public:
+    poreMesh d;
+
+    dualBuilder(const meshCdt& cdt, const std::map<faceHandle, int>& cellOf, const wallSearch& edges)
+    :
+        cdt_(cdt), cellOf_(cellOf), edges_(edges)
+    {
+        for (const auto& fc : cellOf_) centre_[fc.first] = add(dualPoint(cdt_, fc.first, cellOf_));
+        std::set<vertex> done;
+        for (const auto& fc : cellOf_)
+        {
+            for (int k = 0; k < 3; ++k)
+            {
+                if (done.insert(fc.first->vertex(k)).second) cellsOf(fc.first->vertex(k));
+            }
+        }
+        mergeCoincident(cdt_, cellOf_, centre_, midpoint_, d);
+    }
+};
+
+
 //- The cells as the dual of the triangles (see the Description); false,
 //  leaving m as it was, if a dual cell would not be a valid polygon
 bool makeDual(const meshCdt& cdt, const std::map<meshCdt::Face_handle, int>& cellOf,
     const wallSearch& edges, poreMesh& m)
 {
-    poreMesh d;
-    d.area = m.area;
-    std::map<meshCdt::Face_handle, int> centre;
-    std::map<std::pair<meshCdt::Vertex_handle, meshCdt::Vertex_handle>, int> midpoint;
-    std::map<meshCdt::Vertex_handle, int> corner;
-    auto add = [&](const Eigen::Vector2d& x) { d.points.push_back(x); return int(d.points.size()) - 1; };
-    for (const auto& fc : cellOf) centre[fc.first] = add(dualPoint(cdt, fc.first, cellOf));
-    auto mid = [&](meshCdt::Vertex_handle u, meshCdt::Vertex_handle v)
-    {
-        const auto key = u < v ? std::make_pair(u, v) : std::make_pair(v, u);
-        const auto it = midpoint.find(key);
-        if (it != midpoint.end()) return it->second;
-        return midpoint[key] = add(0.5*(vec(u->point()) + vec(v->point())));
-    };
-    auto label = [&](meshCdt::Vertex_handle u, meshCdt::Vertex_handle v)
-    {
-        return edges.closest(0.5*(vec(u->point()) + vec(v->point()))).label;
-    };
-
-    std::set<meshCdt::Vertex_handle> done;
-    for (const auto& fc : cellOf)
-    {
-        for (int k = 0; k < 3; ++k)
-        {
-            const auto v = fc.first->vertex(k);
-            if (!done.insert(v).second) continue;
-            std::vector<meshCdt::Face_handle> around;
-            auto c = cdt.incident_faces(v), end = c;
-            do { around.push_back(c); } while (++c != end);
-            const std::size_t n = around.size();
-            std::size_t first = n;
-            for (std::size_t i = 0; i < n; ++i)
-            {
-                if (cellOf.count(around[i]) && !cellOf.count(around[(i + n - 1)%n])) { first = i; break; }
-            }
-            if (first == n)
-            {
-                // Inside: the circumcentres around it
-                std::vector<int> cell;
-                for (const auto& f : around) cell.push_back(centre.at(f));
-                d.cells.push_back(std::move(cell));
-                continue;
-            }
-            // On the boundary: one cell per fan of kept triangles
-            for (std::size_t s = 0; s < n; ++s)
-            {
-                const std::size_t i0 = (first + s)%n;
-                if (!cellOf.count(around[i0]) || cellOf.count(around[(i0 + n - 1)%n])) continue;
-                const auto f0 = around[i0];
-                const auto w0 = f0->vertex(cdt.ccw(f0->index(v)));
-                const int vi = corner.count(v) ? corner[v] : (corner[v] = add(vec(v->point())));
-                std::vector<int> cell{vi, mid(v, w0)};
-                std::size_t i = i0;
-                for (; cellOf.count(around[i%n]); ++i) cell.push_back(centre.at(around[i%n]));
-                const auto fk = around[(i + n - 1)%n];
-                const auto wk = fk->vertex(cdt.cw(fk->index(v)));
-                cell.push_back(mid(v, wk));
-                const int c = int(d.cells.size());
-                d.boundary.push_back({vi, cell[1], c, label(v, w0)});
-                d.boundary.push_back({cell.back(), vi, c, label(wk, v)});
-                d.cells.push_back(std::move(cell));
-            }
-        }
-    }
-    mergeCoincident(cdt, cellOf, centre, midpoint, d);
+    dualBuilder b(cdt, cellOf, edges);
+    poreMesh& d = b.d;
     for (const auto& cell : d.cells)
     {
         if (cell.size() < 3 || !(signedArea(d, cell) > 0)) return false;
     }
+    d.area = m.area;
     d.throat = m.throat;
     d.droppedArea = m.droppedArea;
     d.droppedRegions = m.droppedRegions;
     m = std::move(d);
     return true;
+}
+
+
+//- The domain's triangulation refined to the size field, then (Lloyd
+//  steps) smoothed and refined again
+void refine(meshCdt& cdt, const poreDomain& domain, const poreMesh::settings& s,
+    const sizeFieldCriteria::sizeFunction& size)
+{
+    insertLoops(cdt, domain);
+    auto mark = [](meshCdt::Face_handle f, bool in) { f->set_in_domain(in); };
+    markDomain(cdt, mark);
+    CGAL::Delaunay_mesher_2<meshCdt, sizeFieldCriteria> mesher(cdt, sizeFieldCriteria(0.125, size));
+    mesher.init(true);
+    mesher.refine_mesh();
+    if (s.lloydIterations == 0) return;
+    CGAL::lloyd_optimize_mesh_2(cdt, CGAL::parameters::max_iteration_number = s.lloydIterations);
+    // The moved vertices may encroach on boundary edges: refined again,
+    // every boundary triangle has its circumcentre inside
+    markDomain(cdt, mark);
+    CGAL::Delaunay_mesher_2<meshCdt, sizeFieldCriteria> again(cdt, sizeFieldCriteria(0.125, size));
+    again.init(true);
+    again.refine_mesh();
+}
+
+
+//- Per kept triangle (of a region that joins the inlet to the outlet) its
+//  index; the regions dropped are counted in m
+std::map<meshCdt::Face_handle, int> keptTriangles(const meshCdt& cdt, const wallSearch& edges,
+    poreMesh& m)
+{
+    const regions r = findRegions(cdt, edges);
+    std::vector<bool> keep(r.inlet.size());
+    for (std::size_t i = 0; i < keep.size(); ++i)
+    {
+        keep[i] = r.inlet[i] && r.outlet[i];
+        if (!keep[i]) { m.droppedArea += r.area[i]; ++m.droppedRegions; }
+    }
+    if (std::find(keep.begin(), keep.end(), true) == keep.end())
+    {
+        throw std::runtime_error("no path through the pore space joins the inlet to the outlet "
+            "(blocks in contact close it; in 2D a packing of touching grains has no "
+            "open path: shrink opens the contacts)");
+    }
+    std::map<meshCdt::Face_handle, int> cellOf;
+    for (const auto& [f, id] : r.of)
+    {
+        if (!keep[std::size_t(id)]) continue;
+        cellOf.emplace(f, int(cellOf.size()));
+        m.area += cdt.triangle(f).area();
+    }
+    return cellOf;
+}
+
+
+//- The narrowest throat whose middle lies in the kept pore space
+poreMesh::throatInfo narrowestThroat(const sizeCdt& sizing, const meshCdt& cdt,
+    const std::map<meshCdt::Face_handle, int>& cellOf, bool dual)
+{
+    std::vector<const widthInfo*> widths;
+    for (auto f = sizing.finite_faces_begin(); f != sizing.finite_faces_end(); ++f)
+    {
+        if (f->info().inDomain && std::isfinite(f->info().throat)) widths.push_back(&f->info());
+    }
+    std::sort(widths.begin(), widths.end(),
+        [](const widthInfo* a, const widthInfo* b) { return a->throat < b->throat; });
+    for (const widthInfo* w : widths)
+    {
+        const Eigen::Vector2d mid = 0.5*(w->from + w->to);
+        const auto f = cdt.locate(point(mid.x(), mid.y()));
+        if (cdt.is_infinite(f) || !cellOf.count(f)) continue;
+        return {true, w->throat, w->from, w->to, cellsCrossed(cdt, w->from, w->to, dual)};
+    }
+    return {};
 }
 
 } // End anonymous namespace
@@ -609,9 +719,8 @@ poreMesh poreMesh::of(const poreDomain& original, const settings& s)
     insertLoops(sizing, domain);
     markDomain(sizing, [](sizeCdt::Face_handle f, bool in) { f->info().inDomain = in; });
     setWidths(sizing, edges, domain.holders);
-
     sizeCdt::Face_handle hint;
-    sizeFieldCriteria::sizeFunction size = [&](const Eigen::Vector2d& x)
+    const sizeFieldCriteria::sizeFunction size = [&](const Eigen::Vector2d& x)
     {
         hint = sizing.locate(point(x.x(), x.y()), hint);
         const double w = sizing.is_infinite(hint) ? s.maxCellSize : hint->info().width;
@@ -619,63 +728,12 @@ poreMesh poreMesh::of(const poreDomain& original, const settings& s)
     };
 
     meshCdt cdt;
-    insertLoops(cdt, domain);
-    CGAL::Delaunay_mesher_2<meshCdt, sizeFieldCriteria> mesher(cdt, sizeFieldCriteria(0.125, size));
-    markDomain(cdt, [](meshCdt::Face_handle f, bool in) { f->set_in_domain(in); });
-    mesher.init(true);
-    mesher.refine_mesh();
-    if (s.lloydIterations > 0)
-    {
-        CGAL::lloyd_optimize_mesh_2(cdt, CGAL::parameters::max_iteration_number = s.lloydIterations);
-        // The moved vertices may encroach on boundary edges: refined
-        // again, every boundary triangle has its circumcentre inside
-        markDomain(cdt, [](meshCdt::Face_handle f, bool in) { f->set_in_domain(in); });
-        CGAL::Delaunay_mesher_2<meshCdt, sizeFieldCriteria> again(cdt, sizeFieldCriteria(0.125, size));
-        again.init(true);
-        again.refine_mesh();
-    }
-
-    const regions r = findRegions(cdt, edges);
+    refine(cdt, domain, s, size);
     poreMesh m;
-    std::vector<bool> keep(r.inlet.size());
-    for (std::size_t i = 0; i < keep.size(); ++i)
-    {
-        keep[i] = r.inlet[i] && r.outlet[i];
-        if (!keep[i]) { m.droppedArea += r.area[i]; ++m.droppedRegions; }
-    }
-    if (std::find(keep.begin(), keep.end(), true) == keep.end())
-    {
-        throw std::runtime_error("no path through the pore space joins the inlet to the outlet "
-            "(blocks in contact close it; in 2D a packing of touching grains has no "
-            "open path: shrink opens the contacts)");
-    }
-
-    std::map<meshCdt::Face_handle, int> cellOf;
-    for (const auto& [f, id] : r.of)
-    {
-        if (!keep[std::size_t(id)]) continue;
-        cellOf.emplace(f, int(cellOf.size()));
-        m.area += cdt.triangle(f).area();
-    }
+    const auto cellOf = keptTriangles(cdt, edges, m);
     const bool dual = s.cells == cellShape::dual && makeDual(cdt, cellOf, edges, m);
     if (!dual) triangleCells(cdt, cellOf, edges, m);
-
-    // The narrowest throat of the kept pore space
-    std::vector<const widthInfo*> widths;
-    for (auto f = sizing.finite_faces_begin(); f != sizing.finite_faces_end(); ++f)
-    {
-        if (f->info().inDomain && std::isfinite(f->info().throat)) widths.push_back(&f->info());
-    }
-    std::sort(widths.begin(), widths.end(),
-        [](const widthInfo* a, const widthInfo* b) { return a->throat < b->throat; });
-    for (const widthInfo* w : widths)
-    {
-        const Eigen::Vector2d mid = 0.5*(w->from + w->to);
-        const auto f = cdt.locate(point(mid.x(), mid.y()));
-        if (cdt.is_infinite(f) || !cellOf.count(f)) continue;
-        m.throat = {true, w->throat, w->from, w->to, cellsCrossed(cdt, w->from, w->to, dual)};
-        break;
-    }
+    m.throat = narrowestThroat(sizing, cdt, cellOf, dual);
     return m;
 }
 
