@@ -26,6 +26,8 @@ binaries (Debian's openfoam package, v1912).
 
   convergence  not a test: the table of docs/verification/poreFlow.md,
             the error of both cases against the cells and the run time
+  plot      not a test: poreFlow.png beside that table, |error| against
+            run time per case, from the table (workDir: the .md file)
 
 Usage: poreFlow.py <binDir> <projectDir> <workDir> [slot|discs|errors|convergence]
 """
@@ -258,7 +260,37 @@ def convergence():
                   % (c, m, n, r["cells"], 100*err, secs))
 
 
+def plot():
+    """|error| against run time, one line per case and Lloyd setting, from
+    the table in the markdown file WORK; written beside it as .png"""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    series = {}
+    with open(WORK) as f:
+        for line in f:
+            cols = [c.strip() for c in line.strip().strip("|").split("|")]
+            if len(cols) != 7 or not cols[5].endswith("%"):
+                continue
+            name = cols[0].split(",")[0] + ("" if cols[3] == "20" else ", no Lloyd steps")
+            series.setdefault(name, []).append((float(cols[6]), abs(float(cols[5].rstrip("%")))))
+    fig, ax = plt.subplots(figsize=(6.4, 4.5), dpi=100)
+    for name, points in series.items():
+        t, e = zip(*points)
+        ax.loglog(t, e, "o-", label=name)
+    ax.set_xlabel("run time of nmmPoreFlow [s] (mesh, checkMesh, simpleFoam)")
+    ax.set_ylabel("|error of k| [%]")
+    ax.set_title("nmmPoreFlow against closed forms")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.splitext(WORK)[0] + ".png")
+
+
 def main():
+    if WHAT == "plot":
+        plot()
+        return
     os.makedirs(WORK, exist_ok=True)
     if shutil.which("simpleFoam") is None and not os.path.exists("/usr/bin/simpleFoam"):
         raise SystemExit("OpenFOAM's simpleFoam is not installed (Debian package openfoam, "
