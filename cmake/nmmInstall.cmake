@@ -31,6 +31,13 @@ install(FILES
     "${PROJECT_BINARY_DIR}/src/nmmSolid/include/nmmSolid/global/version.H"
     DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/nmmSolid/global")
 
+# What nmmPoreFlow copies into its OpenFOAM cases, and the RunFunctions
+# their Allrun sources
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/etc/templates"
+    DESTINATION "${CMAKE_INSTALL_DATADIR}/nmmSolid")
+install(FILES "${PROJECT_SOURCE_DIR}/bin/tools/RunFunctions"
+    DESTINATION "${CMAKE_INSTALL_DATADIR}/nmmSolid/tools")
+
 install(EXPORT nmmSolidTargets
     NAMESPACE nmmSolid::
     FILE nmmSolidTargets.cmake

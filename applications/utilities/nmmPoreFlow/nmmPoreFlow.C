@@ -314,16 +314,6 @@ double wettedPerimeter(const nmm::poreMesh& m, bool sidesAreWalls)
 }
 
 
-fs::path runFunctionsPath()
-{
-    if (const char* dir = std::getenv("NMM_PROJECT_DIR"); dir && *dir)
-    {
-        return fs::path(dir)/"bin"/"tools"/"RunFunctions";
-    }
-    return fs::read_symlink("/proc/self/exe").parent_path()/"tools"/"RunFunctions";
-}
-
-
 // * * * * * * * * * * * * * * * * * Output * * * * * * * * * * * * * * * * //
 
 struct outcome
@@ -438,7 +428,7 @@ int run(int argc, char* argv[])
     writer.sidesType = s.sides;
     writer.depth = std::sqrt(mesh.area/double(mesh.cells.size()));
     const nmm::poreFlowCase flow(runCase.path()/"poreFlow"/time.name);
-    flow.write(s.templateDir, s.fluid, writer, mesh, names, runFunctionsPath());
+    flow.write(s.templateDir, s.fluid, writer, mesh, names, nmm::poreFlowCase::defaultRunFunctions());
 
     std::cout << "Pore mesh\n";
     row("cells", text(mesh.cells.size()));

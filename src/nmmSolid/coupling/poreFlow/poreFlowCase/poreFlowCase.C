@@ -202,13 +202,38 @@ poreFlowCase::wallForces poreFlowCase::forces
 }
 
 
-fs::path poreFlowCase::defaultTemplate()
+//- The first of the places that exists (the last if none does): under
+//  $NMM_PROJECT_DIR, beside the running executable in the project's
+//  layout (bin/) or an install's (bin/, share/nmmSolid/), in the sources
+fs::path firstExisting(const fs::path& inProject, const fs::path& inShare)
 {
+    std::vector<fs::path> places;
     if (const char* dir = std::getenv("NMM_PROJECT_DIR"); dir && *dir)
     {
-        return fs::path(dir)/"etc"/"templates"/"poreFlow";
+        places.push_back(fs::path(dir)/inProject);
     }
-    return fs::path(NMM_SOURCE_ETC_DIR)/"templates"/"poreFlow";
+    std::error_code ec;
+    const fs::path top = fs::read_symlink("/proc/self/exe", ec).parent_path().parent_path();
+    if (!ec)
+    {
+        places.push_back(top/inProject);
+        places.push_back(top/"share"/"nmmSolid"/inShare);
+    }
+    places.push_back(fs::path(NMM_SOURCE_ETC_DIR).parent_path()/inProject);
+    for (const auto& p : places) if (fs::exists(p)) return p;
+    return places.back();
+}
+
+
+fs::path poreFlowCase::defaultTemplate()
+{
+    return firstExisting(fs::path("etc")/"templates"/"poreFlow", fs::path("templates")/"poreFlow");
+}
+
+
+fs::path poreFlowCase::defaultRunFunctions()
+{
+    return firstExisting(fs::path("bin")/"tools"/"RunFunctions", fs::path("tools")/"RunFunctions");
 }
 
 
