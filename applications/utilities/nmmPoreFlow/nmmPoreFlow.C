@@ -53,6 +53,8 @@ Usage
                     it) and stop
 \*---------------------------------------------------------------------------*/
 
+#include "nmmGeometryTools/boxExtent/boxExtent.H"
+#include "nmmGeometryTools/geometryCase/geometryCase.H"
 #include "nmmSolid/coupling/blockOutlines/blockOutlines.H"
 #include "nmmSolid/coupling/poreFlow/poreFlowCase/poreFlowCase.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
@@ -80,19 +82,6 @@ namespace
 {
 
 // * * * * * * * * * * * * * * * * Input  * * * * * * * * * * * * * * * * //
-
-const nmm::keywordTable& boxKeywords()
-{
-    static const nmm::keywordTable table = []
-    {
-        nmm::keywordTable t("box", "the box the flow runs through");
-        t.vector("min", "lower left corner", "m").required();
-        t.vector("max", "upper right corner", "m").required();
-        return t;
-    }();
-    return table;
-}
-
 
 const nmm::keywordTable& keywords()
 {
@@ -160,17 +149,10 @@ settings readSettings(const nmm::dictionary& dict)
     s.axis = keywords().get<std::string>(dict, "flowDirection") == "x" ? 0 : 1;
     if (hasBox)
     {
-        const nmm::dictionary& b = dict.subDict("box");
-        boxKeywords().validate(b);
+        const nmm::boxExtent b = nmm::boxExtent::read(dict.subDict("box"));
         nmm::flowBox box;
-        const auto lo = b.get<std::vector<double>>("min"), hi = b.get<std::vector<double>>("max");
-        if (lo.size() != 2 || hi.size() != 2 || !(hi[0] > lo[0]) || !(hi[1] > lo[1]))
-        {
-            throw b.lookupEntry("max").error("the box needs min (x0 y0) and max (x1 y1) "
-                "with x1 > x0 and y1 > y0");
-        }
-        box.min = {lo[0], lo[1]};
-        box.max = {hi[0], hi[1]};
+        box.min = {b.x0, b.y0};
+        box.max = {b.x1, b.y1};
         s.box = box;
     }
     else
@@ -386,14 +368,12 @@ int run(int argc, char* argv[])
         "each block). docs/coupling.md explains the coupling."
     );
     args.addKeywordHelp("system/nmmPoreFlowDict", keywords());
-    args.addKeywordHelp("system/nmmPoreFlowDict, 'box'", boxKeywords());
+    args.addKeywordHelp("system/nmmPoreFlowDict, 'box'", nmm::boxExtent::keywords());
     if (args.parse(argc, argv) == nmm::argList::parseResult::done) return 0;
     args.printBanner(std::cout);
 
     const nmm::caseFolder runCase(args.casePath());
-    nmm::readOptions ro;
-    ro.caseDir = runCase.path();
-    const nmm::dictionary dict = nmm::dictionary::read(runCase.system()/"nmmPoreFlowDict", ro);
+    const nmm::dictionary dict = nmm::readUtilityDict(runCase.path(), "nmmPoreFlowDict");
     const settings s = readSettings(dict);
     const nmm::instant time = selectTime(runCase, args);
 

@@ -1,6 +1,7 @@
 #include "nmmSolid/coupling/poreFlow/poreFlowCase/poreFlowCase.H"
 
 #include "nmmSolid/global/fatalError/fatalError.H"
+#include "nmmSolid/io/case/caseFolder/caseFolder.H"
 #include "nmmSolid/io/dictionary/dictionary.H"
 
 #include <cstdlib>
@@ -88,26 +89,6 @@ std::vector<std::string> meshFailures(const std::string& log)
     return failed;
 }
 
-//- The newest numbered time folder of the case
-fs::path latestTime(const fs::path& dir)
-{
-    fs::path latest;
-    double value = -1;
-    for (const auto& e : fs::directory_iterator(dir))
-    {
-        const auto name = e.path().filename().string();
-        char* end = nullptr;
-        const double v = std::strtod(name.c_str(), &end);
-        if (e.is_directory() && end && *end == '\0' && !name.empty() && v > value)
-        {
-            value = v;
-            latest = e.path();
-        }
-    }
-    return latest;
-}
-
-
 //- The numbers of a field entry as OpenFOAM writes it: "uniform x" or
 //  "nonuniform List<type> n (...)", n values of the given components
 std::vector<double> fieldValues(const entry& e, const fs::path& file, std::size_t components,
@@ -138,13 +119,19 @@ std::vector<double> fieldValues(const entry& e, const fs::path& file, std::size_
 }
 
 
-//- A field's values on the faces of a patch: its "value", or where the
-//  condition writes none (zeroGradient), the values of the faces' cells
-std::vector<double> patchValues(const fs::path& file, const std::string& patch,
-    std::size_t components, const std::vector<poreMesh::boundaryFace>& faces, std::size_t nCells)
+dictionary readField(const fs::path& file)
 {
     if (!fs::is_regular_file(file)) throw fatalError("OpenFOAM wrote no " + file.string());
-    const dictionary field = dictionary::read(file);
+    return dictionary::read(file);
+}
+
+
+//- A field's values on the faces of a patch: its "value", or where the
+//  condition writes none (zeroGradient), the values of the faces' cells
+std::vector<double> patchValues(const dictionary& field, const fs::path& file,
+    const std::string& patch, std::size_t components,
+    const std::vector<poreMesh::boundaryFace>& faces, std::size_t nCells)
+{
     if (const entry* v = field.subDict("boundaryField").subDict(patch).findEntry("value"))
     {
         return fieldValues(*v, file, components, faces.size());
@@ -170,7 +157,8 @@ poreFlowCase::wallForces poreFlowCase::forces
     std::size_t nBlocks
 ) const
 {
-    const fs::path time = latestTime(dir_);
+    const fs::path time = caseFolder(dir_).timePath(caseFolder(dir_).times().back().name);
+    const dictionary pField = readField(time/"p"), tauField = readField(time/"wallShearStress");
     wallForces f;
     f.block.assign(nBlocks, Eigen::Vector2d::Zero());
     std::vector<std::string> walls{"walls"};
@@ -179,8 +167,9 @@ poreFlowCase::wallForces poreFlowCase::forces
     {
         const auto faces = foamPolyMesh::patchFaces(m, patch);
         if (faces.empty()) continue;
-        const auto p = patchValues(time/"p", patch, 1, faces, m.cells.size());
-        const auto tau = patchValues(time/"wallShearStress", patch, 3, faces, m.cells.size());
+        const auto p = patchValues(pField, time/"p", patch, 1, faces, m.cells.size());
+        const auto tau = patchValues(tauField, time/"wallShearStress", patch, 3, faces,
+            m.cells.size());
         for (std::size_t i = 0; i < faces.size(); ++i)
         {
             const Eigen::Vector2d ab = m.points[std::size_t(faces[i].b)] - m.points[std::size_t(faces[i].a)];
