@@ -66,7 +66,7 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "nmmGeometryTools/blockList/blockList.H"
-#include "nmmGeometryTools/boxExtent/boxExtent.H"
+#include "nmmSolid/io/boxExtent/boxExtent.H"
 #include "nmmGeometryTools/geometryCase/geometryCase.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/argList/argList.H"

@@ -38,7 +38,7 @@ Usage
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include "nmmGeometryTools/blockList/blockList.H"
-#include "nmmGeometryTools/boxExtent/boxExtent.H"
+#include "nmmSolid/io/boxExtent/boxExtent.H"
 #include "nmmGeometryTools/geometryCase/geometryCase.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/argList/argList.H"

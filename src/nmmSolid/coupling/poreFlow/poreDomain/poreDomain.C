@@ -16,31 +16,6 @@ namespace
 
 using point = exactKernel::Point_2;
 
-//- Area centroid of a block: outer loop less holes (either orientation)
-Eigen::Vector2d centroid(const std::vector<poreSpace::loop>& loops)
-{
-    double a = 0;
-    Eigen::Vector2d c = Eigen::Vector2d::Zero();
-    for (std::size_t l = 0; l < loops.size(); ++l)
-    {
-        double la = 0;
-        Eigen::Vector2d lc = Eigen::Vector2d::Zero();
-        const auto& p = loops[l];
-        for (std::size_t i = 0; i < p.size(); ++i)
-        {
-            const auto& q = p[i];
-            const auto& r = p[(i + 1)%p.size()];
-            const double cross = q.x()*r.y() - r.x()*q.y();
-            la += cross;
-            lc += cross*(q + r);
-        }
-        // Holes subtract whatever their orientation
-        const double sign = (l == 0) == (la > 0) ? 1 : -1;
-        a += sign*la;
-        c += sign*lc;
-    }
-    return a != 0 ? Eigen::Vector2d(c/(3*a)) : loops.front().front();
-}
 
 
 std::vector<std::vector<poreSpace::loop>> shrunk
@@ -52,7 +27,7 @@ std::vector<std::vector<poreSpace::loop>> shrunk
     for (std::size_t b = 0; b < blocks.size() && b < shrink.size(); ++b)
     {
         if (blocks[b].empty() || shrink[b] == 0) continue;
-        const Eigen::Vector2d c = centroid(blocks[b]);
+        const Eigen::Vector2d c = poreDomain::centroid(blocks[b]);
         for (auto& l : blocks[b])
         {
             for (auto& x : l) x = c + (1 - shrink[b])*(x - c);
@@ -148,6 +123,32 @@ std::string poreDomain::patchName(int label)
         case upperSide: return "upperSide";
         default: return "walls";
     }
+}
+
+
+Eigen::Vector2d poreDomain::centroid(const std::vector<poreSpace::loop>& loops)
+{
+    double a = 0;
+    Eigen::Vector2d c = Eigen::Vector2d::Zero();
+    for (std::size_t l = 0; l < loops.size(); ++l)
+    {
+        double la = 0;
+        Eigen::Vector2d lc = Eigen::Vector2d::Zero();
+        const auto& p = loops[l];
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+            const auto& q = p[i];
+            const auto& r = p[(i + 1)%p.size()];
+            const double cross = q.x()*r.y() - r.x()*q.y();
+            la += cross;
+            lc += cross*(q + r);
+        }
+        // Holes subtract whatever their orientation
+        const double sign = (l == 0) == (la > 0) ? 1 : -1;
+        a += sign*la;
+        c += sign*lc;
+    }
+    return a != 0 ? Eigen::Vector2d(c/(3*a)) : loops.front().front();
 }
 
 

@@ -180,7 +180,11 @@ poreFlowCase::wallForces poreFlowCase::forces
             const Eigen::Vector2d t(tau[3*i], tau[3*i + 1]);
             const Eigen::Vector2d F = density*(p[i]*n - t)*ab.norm();
             f.total += F;
-            if (faces[i].label >= 0) f.block[std::size_t(faces[i].label)] += F;
+            if (faces[i].label < 0) continue;
+            f.block[std::size_t(faces[i].label)] += F;
+            const Eigen::Vector2d mid = 0.5*(m.points[std::size_t(faces[i].a)]
+                + m.points[std::size_t(faces[i].b)]);
+            f.faces.push_back({faces[i].label, mid, F, ab.norm()});
         }
     }
     for (const auto& face : foamPolyMesh::patchFaces(m, "inlet"))

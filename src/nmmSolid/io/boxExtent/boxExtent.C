@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "nmmGeometryTools/boxExtent/boxExtent.H"
+#include "nmmSolid/io/boxExtent/boxExtent.H"
 
 #include <array>
 #include <iomanip>
