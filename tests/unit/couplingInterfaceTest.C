@@ -144,13 +144,64 @@ TEST(couplingInterface, pressureLoadsAPatchAsThePressureOf0DDoes)
 }
 
 
+TEST(couplingInterface, aTractionLoadsAPatchAsAPressureAlongItsNormalDoes)
+{
+    const double p = 10;
+    const auto pressed = column(0), pulled = column(0);
+    auto m0 = pressed->model(), m1 = pulled->model();
+    couplingInterface c0(*m0), c1(*m1);
+    c0.setPressure("top", {p});
+    c1.setTraction("top", {{0, -p}});
+    c0.setDeltaT(1);
+    c1.setDeltaT(1);
+    stepOnce(c0);
+    stepOnce(c1);
+    const double dy = c0.displacement("top")[0].y();
+    EXPECT_LT(dy, 0);
+    EXPECT_NEAR(c1.displacement("top")[0].y(), dy, 1e-12*std::abs(dy));
+    EXPECT_NEAR(c1.displacement("right")[0].x(), c0.displacement("right")[0].x(),
+                1e-12*std::abs(dy));
+}
+
+
+TEST(couplingInterface, blockEdgesAreEveryPieceOfTheOutlineAndTakeTractions)
+{
+    const double p = 10;
+    const auto c = column(0);
+    auto m = c->model();
+    couplingInterface ci(*m);
+    const auto edges = ci.faces("blockEdges");
+    double perimeter = 0;
+    std::vector<Eigen::Vector2d> t(edges.size(), Eigen::Vector2d::Zero());
+    for (std::size_t i = 0; i < edges.size(); ++i)
+    {
+        perimeter += edges[i].length;
+        EXPECT_EQ(edges[i].block, 0u);
+        // The pieces of the top: the same load as the patch's pressure
+        if (edges[i].normal.y() > 0.5) t[i] = Eigen::Vector2d(0, -p);
+    }
+    EXPECT_NEAR(perimeter, 6, 1e-12);
+    // The cover cuts the outline: more pieces than the four sides
+    EXPECT_GT(edges.size(), 4u);
+    ci.setTraction("blockEdges", t);
+    ci.setDeltaT(1);
+    stepOnce(ci);
+
+    const auto direct = column(p);
+    const auto m0 = afterOneStep(*direct);
+    const couplingInterface c0(*m0);
+    const double dy = c0.displacement("top")[0].y();
+    EXPECT_NEAR(ci.displacement("top")[0].y(), dy, 1e-12*std::abs(dy));
+}
+
+
 TEST(couplingInterface, facesAreWhereThePatchIsNow)
 {
     const auto c = column(0);
     auto m = c->model();
     couplingInterface ci(*m);
     const auto regions = ci.regions();
-    EXPECT_EQ(regions.size(), 4u);
+    EXPECT_EQ(regions.size(), 5u);   // the four sides and blockEdges
     const auto top = ci.faces("top");
     ASSERT_EQ(top.size(), 1u);
     EXPECT_NEAR(top[0].length, 1, 1e-14);
@@ -210,6 +261,14 @@ TEST(couplingInterface, wrongInputIsAnErrorThatChangesNothing)
     EXPECT_NE(message([&] { ci.setDeltaT(-1); }).find("positive"), std::string::npos);
     EXPECT_NE(message([&] { ci.setDeltaT(std::numeric_limits<double>::infinity()); })
               .find("positive"), std::string::npos);
+    EXPECT_NE(message([&] { ci.setTraction("top", {{0, 1}, {0, 2}}); })
+              .find("has 1 faces; 2 tractions"), std::string::npos);
+    EXPECT_NE(message([&] { ci.setTraction("top", {{0, std::nan("")}}); })
+              .find("traction of face 0 is not finite"), std::string::npos);
+    EXPECT_NE(message([&] { ci.setTraction("pores", {}); }).find("takes a pressure"),
+              std::string::npos);
+    EXPECT_NE(message([&] { ci.setTraction("blockEdgs", {}); }).find("did you mean 'blockEdges'"),
+              std::string::npos);
 
     // None of it loaded the column
     ci.setDeltaT(1);

@@ -57,6 +57,16 @@ couplingInterface::couplingInterface(nmmSolidModel& model)
             if (f >= 0) faces[std::size_t(f)].push_back(i);
         }
     }
+    if (segments_.count(edgesRegion))
+    {
+        throw couplingError(std::string("a patch is named '") + edgesRegion
+            + "', the name of the region of every block edge: rename the patch");
+    }
+    auto& edges = segments_[edgesRegion];
+    for (std::size_t i = 0; i < segments.size(); ++i)
+    {
+        if (segments[i].kind == physicalCover::segmentKind::blockEdge) edges.push_back({i});
+    }
 }
 
 
@@ -80,6 +90,7 @@ std::vector<std::string> couplingInterface::regions() const
 {
     std::vector<std::string> names;
     for (const geometryPatch& p : model_.geometry().patches()) names.push_back(p.name);
+    names.push_back(edgesRegion);
     if (model_.contacts()) names.push_back(fractures);
     return names;
 }
@@ -173,9 +184,36 @@ void couplingInterface::setPressure(const std::string& region, const std::vector
 }
 
 
+void couplingInterface::setTraction(const std::string& region,
+    const std::vector<Eigen::Vector2d>& t)
+{
+    if (isFractures(region) || region == poresRegion)
+    {
+        throw couplingError("region '" + region + "' takes a pressure, not a traction");
+    }
+    const std::size_t n = facesOf(region).size();
+    if (t.size() != n)
+    {
+        throw couplingError("region '" + region + "' has " + std::to_string(n)
+            + " faces; " + std::to_string(t.size()) + " tractions were given");
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        if (!t[i].allFinite())
+        {
+            throw couplingError("region '" + region + "': the traction of face "
+                + std::to_string(i) + " is not finite");
+        }
+    }
+    traction_[region] = t;
+    applySegmentPressure();
+}
+
+
 void couplingInterface::applySegmentPressure()
 {
-    std::vector<double> perSegment(model_.elements().segments().size(), 0.0);
+    const std::size_t n = model_.elements().segments().size();
+    std::vector<double> perSegment(n, 0.0);
     const auto add = [&](const std::vector<std::vector<std::size_t>>& faces,
         const std::vector<double>& values)
     {
@@ -187,6 +225,17 @@ void couplingInterface::applySegmentPressure()
     for (const auto& [name, values] : pressure_) add(segments_.at(name), values);
     add(poreWalls_, porePressure_);
     model_.setCouplingPressure(std::move(perSegment));
+    if (traction_.empty()) return;
+    std::vector<Eigen::Vector2d> tractions(n, Eigen::Vector2d::Zero());
+    for (const auto& [name, values] : traction_)
+    {
+        const auto& faces = segments_.at(name);
+        for (std::size_t f = 0; f < faces.size(); ++f)
+        {
+            for (const std::size_t i : faces[f]) tractions[i] += values[f];
+        }
+    }
+    model_.setCouplingTraction(std::move(tractions));
 }
 
 

@@ -129,7 +129,7 @@ std::unique_ptr<nmmSolidModel> nmmSolidModel::New
         boundaryConditions::read(runCase.timePath(startTimeName)/"D", *p.geometry)
     ));
 
-    const gravity g = gravity::read(runCase.constant()/"g");
+    const nmm::gravity g = nmm::gravity::read(runCase.constant()/"g");
     if (g.active()) p.gravity = g.value();
 
     p.contacts = readContacts(runCase, *p.geometry, *p.properties);

@@ -255,7 +255,7 @@ void nmmAssembler::addSegments
 ) const
 {
     const auto gamma = nitscheParameters(patchD);
-    addCouplingPressure(patchD, f);
+    addCouplingLoads(patchD, f);
     for (std::size_t i = 0; i < rules_.size(); ++i)
     {
         const boundaryRule* rule = rules_[i];
@@ -313,16 +313,19 @@ void nmmAssembler::addLoad
 }
 
 
-void nmmAssembler::addCouplingPressure(const Eigen::Matrix2Xd& patchD, Eigen::VectorXd& f) const
+void nmmAssembler::addCouplingLoads(const Eigen::Matrix2Xd& patchD, Eigen::VectorXd& f) const
 {
-    for (std::size_t i = 0; i < couplingPressure_.size(); ++i)
+    const std::size_t n = std::max(couplingPressure_.size(), couplingTraction_.size());
+    for (std::size_t i = 0; i < n; ++i)
     {
-        const double p = couplingPressure_[i];
-        if (p == 0) continue;
+        const double p = i < couplingPressure_.size() ? couplingPressure_[i] : 0.0;
+        const Eigen::Vector2d t = i < couplingTraction_.size()
+            ? couplingTraction_[i] : Eigen::Vector2d::Zero();
+        if (p == 0 && t.isZero()) continue;
         const auto& seg = pc_.segments()[i];
         const auto g = currentSegment(space_.currentTriangle(seg.element, patchD), seg);
         if (g.length == 0) continue;
-        const Eigen::Vector2d tr = -p*g.normal;
+        const Eigen::Vector2d tr = t - p*g.normal;
         addLoad(seg, g.length, [&](const Eigen::Vector2d&) { return tr; }, f);
     }
 }
@@ -347,6 +350,17 @@ void nmmAssembler::setCouplingPressure(std::vector<double> p)
             + " values for " + std::to_string(pc_.segments().size()) + " boundary segments");
     }
     couplingPressure_ = std::move(p);
+}
+
+
+void nmmAssembler::setCouplingTraction(std::vector<Eigen::Vector2d> t)
+{
+    if (!t.empty() && t.size() != pc_.segments().size())
+    {
+        throw std::invalid_argument("setCouplingTraction: " + std::to_string(t.size())
+            + " values for " + std::to_string(pc_.segments().size()) + " boundary segments");
+    }
+    couplingTraction_ = std::move(t);
 }
 
 
@@ -412,7 +426,7 @@ Eigen::VectorXd nmmAssembler::externalForces(const fieldState& s, double t) cons
     Eigen::VectorXd f = Eigen::VectorXd::Zero(Eigen::Index(nUnknowns()));
     addBodyForce(f);
     const auto patchD = space_.patchDisplacements(s.D);
-    addCouplingPressure(patchD, f);
+    addCouplingLoads(patchD, f);
     for (std::size_t i = 0; i < rules_.size(); ++i)
     {
         const boundaryRule* rule = rules_[i];
