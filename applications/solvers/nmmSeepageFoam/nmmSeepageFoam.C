@@ -26,7 +26,9 @@ Description
         couplingInterval    0.01;       // [s] of the solid's time
         immersedBlocks      (grain.*);  // the blocks the water surrounds
 
-    Written at every fluid solve, a row of
+    Written at every fluid solve: postProcessing/seepage/<time>/blockForces.dat,
+    the fluid's force on each block (pressure and wall shear stress, without
+    buoyancy), and a row of
     postProcessing/seepage/<startTime>/seepage.dat: the time; the cells
     and SIMPLE iterations of the flow; its flow rate, permeability and
     Reynolds number; the force balance |F_walls - dp W|/(dp W); the
@@ -51,6 +53,7 @@ Usage
 #include "nmmSolid/coupling/couplingInterface/couplingInterface.H"
 #include "nmmSolid/coupling/poreFlow/poreFlowProblem/poreFlowProblem.H"
 #include "nmmSolid/coupling/poreFlow/seepageLoads/seepageLoads.H"
+#include "nmmSolid/geometry/block/block.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/global/signals/stopSignals.H"
 #include "nmmSolid/io/argList/argList.H"
@@ -139,16 +142,9 @@ public:
         const auto outlines = nmm::blockOutlines(model_).at(model_.state().D);
         for (std::size_t b = 0; b < outlines.size(); ++b)
         {
+            // Holes run the other way round: their signed areas subtract
             double a = 0;
-            for (const auto& loop : outlines[b])
-            {
-                for (std::size_t i = 0; i < loop.size(); ++i)
-                {
-                    const auto& p = loop[i];
-                    const auto& q = loop[(i + 1)%loop.size()];
-                    a += 0.5*(p.x()*q.y() - q.x()*p.y());
-                }
-            }
+            for (const auto& loop : outlines[b]) a += nmm::signedArea(loop);
             area_.push_back(std::abs(a));
             const auto& props = model_.properties();
             const auto& block = model_.geometry().blocks()[b];
@@ -195,6 +191,8 @@ void seepageCoupling::update(const std::string& time)
     solid_.setPressure("blockEdges", loads.hydrostatic(s_.immersed, flow_.config().fluid.density,
         model_.gravity(), outlet));
     writeRow(time, r, blocks);
+    flow_.writeBlockForces(casePath_/"postProcessing"/"seepage"/time/"blockForces.dat", r,
+        "nmmSeepageFoam");
     std::cout << std::endl;
 }
 
@@ -246,7 +244,8 @@ int run(int argc, char* argv[])
         "(system/nmmPoreFlowDict, the case poreFlow/<time>/), and loads each block "
         "edge with the fluid's pressure and shear on it, and the immersed blocks "
         "with their buoyancy, until the next. Writes "
-        "postProcessing/seepage/<startTime>/seepage.dat. docs/coupling.md explains "
+        "postProcessing/seepage/<startTime>/seepage.dat and, per fluid solve, "
+        "postProcessing/seepage/<time>/blockForces.dat. docs/coupling.md explains "
         "the coupling."
     );
     args.addBoolOption("noFunctionObjects", "Do not execute function objects");

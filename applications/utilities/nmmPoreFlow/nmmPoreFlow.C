@@ -132,20 +132,6 @@ void writeTable(const fs::path& file, const nmm::poreFlowProblem::solution& o)
 }
 
 
-void writeForces(const fs::path& file, const std::string& timeName,
-    const std::vector<std::string>& names, const nmm::poreFlowCase::wallForces& F)
-{
-    std::ofstream os(file);
-    os << "# nmmPoreFlow at time " << timeName << ": the fluid's force on each block "
-          "(pressure and wall shear stress) [N/m]\n# block Fx Fy\n" << std::setprecision(10);
-    for (std::size_t b = 0; b < names.size(); ++b)
-    {
-        os << names[b] << ' ' << F.block[b].x() << ' ' << F.block[b].y() << '\n';
-    }
-    if (!os.flush()) throw nmm::fatalError("could not write " + file.string());
-}
-
-
 int run(int argc, char* argv[])
 {
     nmm::argList args("nmmPoreFlow",
@@ -182,11 +168,9 @@ int run(int argc, char* argv[])
     nmm::poreFlowProblem::report(r, std::cout);
     if (!r.ran) { std::cout << "\nEnd\n"; return 0; }
 
-    std::vector<std::string> names;
-    for (const auto& b : model->geometry().blocks()) names.push_back(b.name());
     const fs::path table = runCase.path()/"postProcessing"/"poreFlow"/time.name/"poreFlow.dat";
     writeTable(table, r);
-    writeForces(table.parent_path()/"blockForces.dat", time.name, names, r.forces);
+    problem.writeBlockForces(table.parent_path()/"blockForces.dat", r, "nmmPoreFlow");
     std::cout << "\nWritten " << table.lexically_relative(runCase.path()).string() << "\n\nEnd\n";
     return 0;
 }

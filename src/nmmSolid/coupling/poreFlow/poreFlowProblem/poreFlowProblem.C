@@ -7,6 +7,7 @@
 #include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
 
 #include <chrono>
+#include <fstream>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -283,6 +284,26 @@ void poreFlowProblem::report(const solution& s, std::ostream& os)
         os << "\nWarning: Reynolds number " << s.reynolds << " > 1: the flow is not "
             "creeping; lower pressureDrop for Darcy's permeability\n";
     }
+}
+
+void poreFlowProblem::writeBlockForces
+(
+    const std::filesystem::path& file,
+    const solution& s,
+    const std::string& application
+) const
+{
+    std::filesystem::create_directories(file.parent_path());
+    std::ofstream os(file);
+    os << "# " << application << " at time " << s.timeName << ": the fluid's force on each "
+          "block (pressure and wall shear stress) [N/m]\n# block Fx Fy\n" << std::setprecision(10);
+    const auto& blocks = model_.geometry().blocks();
+    for (std::size_t b = 0; b < blocks.size(); ++b)
+    {
+        os << blocks[b].name() << ' ' << s.forces.block[b].x() << ' ' << s.forces.block[b].y()
+            << '\n';
+    }
+    if (!os.flush()) throw fatalError("could not write " + file.string());
 }
 
 } // End namespace nmm
