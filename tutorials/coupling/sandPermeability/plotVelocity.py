@@ -26,7 +26,8 @@ def last_internal(case):
 
 def cells(path):
     """Each cell's polygon (its points at the lower face, in order around
-    the centroid: the cells are star-shaped about it) and |U|"""
+    the centroid: the cells are star-shaped about it), |U|, and the
+    direction the flow takes on the whole (sum of U)"""
     from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
     from vtkmodules.util.numpy_support import vtk_to_numpy
     reader = vtkXMLUnstructuredGridReader()
@@ -49,7 +50,12 @@ def cells(path):
         low.sort(key=lambda p: math.atan2(p[1] - cy, p[0] - cx))
         polys.append(low)
         mags.append(math.hypot(U[c][0], U[c][1]))
-    return polys, mags
+    Ux, Uy = U[:, 0].sum(), U[:, 1].sum()
+    if abs(Ux) >= abs(Uy):
+        direction = "left to right" if Ux > 0 else "right to left"
+    else:
+        direction = "bottom to top" if Uy > 0 else "top to bottom"
+    return polys, mags, direction
 
 
 def main():
@@ -59,7 +65,7 @@ def main():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.collections import PolyCollection
-    polys, mags = cells(last_internal(case))
+    polys, mags, direction = cells(last_internal(case))
     fig, ax = plt.subplots(figsize=(6.4, 5.6), dpi=100)
     coll = PolyCollection([[(1e3*x, 1e3*y) for x, y in p] for p in polys], array=mags,
                           cmap="viridis", edgecolors="face", linewidths=0.1)
@@ -67,7 +73,7 @@ def main():
     ax.autoscale_view()
     ax.set_aspect("equal")
     ax.set_facecolor("0.85")
-    ax.set_xlabel("x [mm] (flow from left to right)")
+    ax.set_xlabel("x [mm] (flow from %s)" % direction)
     ax.set_ylabel("y [mm]")
     ax.set_title(title, fontsize=10)
     fig.colorbar(coll, ax=ax, shrink=0.8)
