@@ -22,7 +22,9 @@ binaries (Debian's openfoam package, v1912).
             force balance as for the slot, a quarter of it on each disc
   errors    broken input: an unknown keyword ("did you mean"), a missing
             physics keyword, a box that the blocks close, a time that was
-            not written; each an error naming the file or time, exit 1
+            not written; and nmmSeepageFoam's nmmSeepageDict (an unknown
+            keyword, a step that is not positive, blocks that match none, a
+            missing keyword); each an error naming the file or time, exit 1
 
   convergence  not a test: the table of docs/verification/poreFlow.md,
             the error of both cases against the cells and the run time
@@ -216,6 +218,20 @@ def errors():
                  "a box without an area")
     covered = good.replace("max (%g %g)" % (L, h + t), "max (%g %g)" % (L, -t/2))
     expect_error(covered, r"time 0: no pore space in the box", "a box the blocks cover")
+    # nmmSeepageFoam's own dictionary, read before its first fluid solve
+    seepage = "couplingInterval 0.01;\nimmersedBlocks (b.*);\n"
+    for text, pattern, what in (
+            (seepage.replace("couplingInterval", "couplingIntervl"),
+             r"couplingIntervl.*did you mean.*couplingInterval.*nmmSeepageDict at line 9",
+             "an unknown keyword in nmmSeepageDict, at its line, with a 'did you mean'"),
+            (seepage.replace("0.01", "0"), r"out of range.*nmmSeepageDict.*keyword: couplingInterval",
+             "a coupling interval that is not positive"),
+            (seepage.replace("(b.*)", "(grain.*)"), r"immersedBlocks: no block matches 'grain",
+             "immersedBlocks that match no block"),
+            ("couplingInterval 0.01;\n", r"nmmSeepageDict.*immersedBlocks",
+             "a missing immersedBlocks names the file and keyword")):
+        write(case + "/system/nmmSeepageDict", "dictionary", "system", text)
+        expect_error(good, pattern, what, ("nmmSeepageFoam",))
     # A third block across the slot closes it
     with open(case + "/system/nmmMeshDict") as f:
         mesh = f.read()
