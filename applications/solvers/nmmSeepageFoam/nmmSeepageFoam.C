@@ -174,7 +174,7 @@ void seepageCoupling::update(const std::string& time)
     std::cout << "Pore flow at time " << time << "\n";
     const auto r = flow_.solve(D, time, casePath_);
     nmm::poreFlowProblem::report(r, std::cout);
-    const auto blocks = nmm::blockOutlines(model_).at(D);
+    const auto& blocks = r.outlines;
     const nmm::seepageLoads loads(solid_.faces("blockEdges"));
     try
     {

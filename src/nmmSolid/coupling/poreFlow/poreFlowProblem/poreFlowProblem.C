@@ -209,7 +209,8 @@ poreFlowProblem::solution poreFlowProblem::solve
     const auto start = std::chrono::steady_clock::now();
     solution r;
     r.timeName = timeName;
-    const auto outlines = blockOutlines(model_).at(D);
+    r.outlines = blockOutlines(model_).at(D);
+    const auto& outlines = r.outlines;
     r.box = boxAt(outlines);
     r.porosity = poreDomain::cut(outlines, r.box, {}, holders_).area/r.box.area();
     const poreDomain domain = poreDomain::cut(outlines, r.box, shrink_, holders_);
