@@ -45,23 +45,22 @@ double twiceArea(const manifoldElement::triangleNodes& T)
 }
 
 
-cgalPolygon currentLoop
-(
-    const manifoldElement::triangleNodes& T,
-    const manifoldElement::baryLoop& loop
-)
+//- A barycentric loop in the plane of its (lambda1, lambda2), where the
+//  element is the unit right triangle
+cgalPolygon baryPolygon(const manifoldElement::baryLoop& loop)
 {
     cgalPolygon p;
-    for (const auto& lambda : loop)
-    {
-        const Eigen::Vector2d x = manifoldElement::toCartesian(T, lambda);
-        p.push_back(K::Point_2(x.x(), x.y()));
-    }
+    for (const auto& lambda : loop) p.push_back(K::Point_2(lambda[1], lambda[2]));
     return p;
 }
 
 
-//- Area of the element's current shape inside the box, exactly
+//- Area of the element's current shape inside the box, exactly. The
+//  clipping is done where the element's loops are stored, in its
+//  barycentric coordinates: the loops mapped to the current triangle in
+//  floating point could cross themselves where a sliver's vertices are
+//  nearly collinear (CGAL's Boolean operations need simple polygons),
+//  while the box maps to a parallelogram, which cannot
 double clippedArea
 (
     const manifoldElement::triangleNodes& T,
@@ -69,20 +68,33 @@ double clippedArea
     const Eigen::AlignedBox2d& region
 )
 {
-    cgalPolygon outer = currentLoop(T, e.loops.front());
+    const double twice = twiceArea(T);
+    if (!(std::abs(twice) > 0)) return 0;
+    cgalPolygon outer = baryPolygon(e.loops.front());
+    if (!outer.is_simple()) return 0;
     if (outer.is_clockwise_oriented()) outer.reverse_orientation();
     cgalPolygonWithHoles shape(outer);
     for (std::size_t l = 1; l < e.loops.size(); ++l)
     {
-        cgalPolygon hole = currentLoop(T, e.loops[l]);
+        cgalPolygon hole = baryPolygon(e.loops[l]);
+        if (!hole.is_simple()) return 0;
         if (hole.is_counterclockwise_oriented()) hole.reverse_orientation();
         shape.add_hole(hole);
     }
     cgalPolygon box;
-    box.push_back(K::Point_2(region.min().x(), region.min().y()));
-    box.push_back(K::Point_2(region.max().x(), region.min().y()));
-    box.push_back(K::Point_2(region.max().x(), region.max().y()));
-    box.push_back(K::Point_2(region.min().x(), region.max().y()));
+    for (const Eigen::Vector2d& corner :
+    {
+        region.corner(Eigen::AlignedBox2d::BottomLeft),
+        region.corner(Eigen::AlignedBox2d::BottomRight),
+        region.corner(Eigen::AlignedBox2d::TopRight),
+        region.corner(Eigen::AlignedBox2d::TopLeft)
+    })
+    {
+        const manifoldElement::baryPoint lambda = manifoldElement::toBarycentric(T, corner);
+        box.push_back(K::Point_2(lambda[1], lambda[2]));
+    }
+    if (!box.is_simple()) return 0;
+    if (box.is_clockwise_oriented()) box.reverse_orientation();
 
     std::vector<cgalPolygonWithHoles> pieces;
     CGAL::intersection(shape, box, std::back_inserter(pieces));
@@ -95,7 +107,8 @@ double clippedArea
             area += h->area();      // clockwise: negative
         }
     }
-    return CGAL::to_double(area);
+    // The unit right triangle maps to T: areas scale by twice T's area
+    return std::abs(twice)*CGAL::to_double(area);
 }
 
 } // End anonymous namespace
