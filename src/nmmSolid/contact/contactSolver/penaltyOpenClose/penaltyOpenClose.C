@@ -186,14 +186,32 @@ bool penaltyOpenClose::openClose
         dd += alpha*delta;
         const auto counts = contacts_->update(dd);
         damped = damped || counts.chattering > 0;
+        // How far dd is from balance with the states the next solve takes:
+        // small where only states at rounding switch, of order one where
+        // the iteration has not found the step's states
+        const double residual = relativeResidual(sys, dd);
         addTime(srv, "contact update", clock);
         ++report.iterations;
         report.contacts = counts.states;
         report.bondsBroken += counts.bondsBroken;
-        logIteration(srv.log, report.iterations, counts, alpha);
+        logIteration(srv.log, report.iterations, counts, alpha, residual);
         settled = alpha == 1 && counts.changes == 0 && counts.frictionSettled();
     }
     return settled;
+}
+
+
+double penaltyOpenClose::relativeResidual
+(
+    const nmmAssembler::system& sys,
+    const Eigen::VectorXd& dd
+) const
+{
+    const long n = long(sys.f.size());
+    const Eigen::VectorXd f = loads_ + contacts_->forces(n);
+    const Eigen::VectorXd r = update_.residual(contacts_->springStiffnesses(), dd, f);
+    const double scale = std::max(f.norm(), (r + f).norm());
+    return scale > 0 ? r.norm()/scale : 0.0;
 }
 
 
@@ -298,7 +316,8 @@ void penaltyOpenClose::logIteration
     std::ostream* log,
     int it,
     const contactModel::iterationCounts& c,
-    double stepLength
+    double stepLength,
+    double residual
 ) const
 {
     if (!log) return;
@@ -309,6 +328,7 @@ void penaltyOpenClose::logIteration
     if (c.chattering) *log << ", chattering " << c.chattering;
     if (c.bondsBroken) *log << ", bonds broken " << c.bondsBroken;
     if (stepLength < 1) *log << ", step length " << stepLength;
+    *log << ", residual " << residual;
     if (!lastSolve_.empty()) *log << " (" << lastSolve_ << ')';
     *log << '\n';
 }
