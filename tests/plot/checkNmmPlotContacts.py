@@ -211,6 +211,7 @@ def check_functions(np, plot, pts, cells, blocks, outer, centre):
     check(plot.wall_blocks(x, cells, blocks) == set(),
           "walls: none among four unit squares")
     check_walls(np, plot)
+    check_broken(np, plot)
 
     cols = list(zip(*CONTACTS))
     pairs, forces, categories, points = plot.contact_pairs(
@@ -282,6 +283,53 @@ def check_functions(np, plot, pts, cells, blocks, outer, centre):
     plt.close(fig)
 
 
+def check_broken(np, plot):
+    """Pairs with a broken bond: an open one (a crack) is drawn without
+    -openPairs, a closed stuck one is told from a stuck one that never had
+    a bond, and sliding and an intact bond still come first."""
+    # contactState, bondIntact, bondBroken, normalForce, blockA, blockB
+    rows = [
+        (0, 0, 1, 0.0, 0, 1),     # (0, 1): open, its bond broke: a crack
+        (0, 0, 0, 0.0, 0, 1),
+        (1, 0, 1, 3.0, 1, 2),     # (1, 2): stuck after its bond broke
+        (1, 0, 0, 2.0, 2, 3),     # (2, 3): stuck, never bonded
+        (2, 0, 1, 5.0, 3, 4),     # (3, 4): sliding after its bond broke
+        (1, 1, 0, 1.0, 4, 5),     # (4, 5): one point still cemented,
+        (0, 0, 1, 0.0, 5, 4),     #         another's bond broke
+        (0, 0, 0, 0.0, 5, 6),     # (5, 6): open, never bonded
+    ]
+    c = list(zip(*rows))
+    _, forces, categories, _ = plot.contact_pairs(
+        c[0], c[3], c[4], c[5], bondIntact=c[1], bondBroken=c[2])
+    want = ["broken", "broken", "bonded", "sliding", "cemented", "open"]
+    check(categories == want, "broken bonds: categories %s, want %s"
+          % (categories, want))
+    check(np.allclose(forces, [0, 3, 2, 5, 1, 0]),
+          "broken bonds: forces of the closed points %s" % forces)
+    _, _, without, _ = plot.contact_pairs(c[0], c[3], c[4], c[5],
+                                          bondIntact=c[1])
+    check(without == ["open", "bonded", "bonded", "sliding", "cemented",
+                      "open"],
+          "broken bonds: files without bondBroken as before %s" % without)
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    segments = np.array([[[k, 0.0], [k, 1.0]] for k in range(len(want))])
+    widths = plot.chain_widths(forces, 5.0)
+    fig, ax = plt.subplots()
+    drawn = plot.draw_chains(ax, segments, widths, categories, False)
+    check("broken" in drawn and len(drawn["broken"].get_segments()) == 2
+          and "open" not in drawn,
+          "broken bonds: both broken pairs drawn without -openPairs, the "
+          "open pair not")
+    check(np.allclose(sorted(drawn["broken"].get_linewidths()),
+                      [plot.MIN_WIDTH, 3.0]),
+          "broken bonds: the open crack at the minimum width, the loaded "
+          "pair by its force")
+    plt.close(fig)
+
+
 def check_walls(np, plot):
     """A 3 x 3 block among unit squares, and a U-shaped box whose centroid
     is in its hollow, are walls; the squares are not."""
@@ -334,7 +382,7 @@ def check_runs(np, plot, a, work, frame, series, vtp):
                               str(dpi), "-o", str(png)])
     check(rc == 0, "-outlines -contacts: exit 0 (%s)" % err.strip())
     check(vtp.name in out and "4 pairs" in out
-          and "bonded 1, cemented 1, sliding 1" in out,
+          and "bonded 1, broken 0, cemented 1, sliding 1" in out,
           "-contacts reads the frame's %s: %s" % (vtp.name, out.strip()))
     if png.is_file() and plain.is_file():
         img, ref = mpimg.imread(str(png)), mpimg.imread(str(plain))

@@ -32,7 +32,13 @@ strain), so a sample that stands shortens by sigma (1 - nu^2)/E x 1 mm.
     to bottom and the right side falls apart): the top moves down more
     than 1.15 times the elastic shortening, and grain boundaries open as
     the run goes on: at the end at least twice as many contacts are
-    open as after the first step.
+    open as after the first step;
+  - the contact frames tell broken bonds from intact ones and from
+    contacts that never had one (bondBroken): without strength none is
+    broken, none is both intact and broken, and at the end of the runs
+    with strength there are no more broken ones than the bonds the log
+    counts broken; at 110 MPa they are at least a tenth of the contact
+    points.
 Exit 1 when a check fails.
 
 Debian's /usr/bin/python3 runs it (the tutorial's plot step needs numpy,
@@ -42,6 +48,7 @@ SPDX-License-Identifier: GPL-3.0-or-later
 
 import math
 import sys
+from pathlib import Path
 
 import paperTutorial
 
@@ -54,6 +61,35 @@ COHESION, FRICTION = 18e6, math.radians(40)
 
 def elasticShortening_um(load):
     return load*(1 - NU**2)/E*HEIGHT*1e6
+
+
+def bondPoints(run):
+    """(points, broken, intact and broken) of the last contact frame of a
+    run"""
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2]/"bin"/"tools"))
+    import nmmVtk
+    path = nmmVtk.readContactSeries(run)[-1][1]
+    c = nmmVtk.readContacts(path)
+    broken = c.data.get("bondBroken")
+    if broken is None:
+        raise SystemExit("%s: no point data 'bondBroken'" % path)
+    broken = broken.reshape(-1) != 0
+    intact = c.data["bondIntact"].reshape(-1) != 0
+    return len(broken), int(broken.sum()), int((broken & intact).sum())
+
+
+def checkBrokenBonds(check, case, rows):
+    for run in ("load11MPaStrength", "load110MPaStrength"):
+        n, broken, both = bondPoints(case/run)
+        logged = rows[run]["bondsBroken"]
+        check(both == 0, "%s: no contact both intact and broken (%d)" % (run, both))
+        check(broken <= logged, "%s: %d contact points with a broken bond at the end, "
+              "at most the %d the log counts" % (run, broken, logged))
+        if run == "load110MPaStrength":
+            check(broken >= 0.1*n, "%s: %d of %d contact points have a broken bond"
+                  % (run, broken, n))
+    _, broken, _ = bondPoints(case/"load11MPaNoStrength")
+    check(broken == 0, "load11MPaNoStrength: no bonds, none broken (%d)" % broken)
 
 
 def main(argv):
@@ -95,6 +131,7 @@ def main(argv):
     check(n["openEnd"] >= 2*n["openFirstStep"],
           "11 MPa without strength: boundaries open, %d open contacts after the first "
           "step, %d at the end" % (n["openFirstStep"], n["openEnd"]))
+    checkBrokenBonds(check, case, rows)
     return check.exitCode()
 
 

@@ -358,7 +358,11 @@ TEST(nmmSolidModel, contactHistorySurvivesARestart)
         s.contacts[i].hiddenOverlap = 1e-6*(i + 1);
         s.contacts[i].slip = 2e-6*(i + 1);
         s.contacts[i].shearForce = 3.0*(i + 1);
+        // The three bonds in turn: none, intact, broken
+        s.contacts[i].bondIntact = i % 3 == 1;
+        s.contacts[i].bondBroken = i % 3 == 2;
     }
+    ASSERT_GE(s.contacts.size(), 3u);
     m->restoreState(s);
     nm::solidOutput::writeState(c.dir.path, *m);
     const nm::solidState r = nm::solidOutput::readState(c.dir.path, *m);
@@ -370,6 +374,7 @@ TEST(nmmSolidModel, contactHistorySurvivesARestart)
         EXPECT_EQ(a.key(), b.key());
         EXPECT_EQ(a.state, b.state);
         EXPECT_EQ(a.bondIntact, b.bondIntact);
+        EXPECT_EQ(a.bondBroken, b.bondBroken);
         EXPECT_EQ(a.hiddenOverlap, b.hiddenOverlap);
         EXPECT_EQ(a.slip, b.slip);
         EXPECT_EQ(a.shearForce, b.shearForce);

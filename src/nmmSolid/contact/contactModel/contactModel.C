@@ -268,6 +268,7 @@ void contactModel::carryHistory(const std::vector<contactRecord>& history, bool 
         {
             r.state = old->state;
             r.bondIntact = old->bondIntact;
+            r.bondBroken = old->bondBroken;
             r.shearForce = old->shearForce;
             r.slip = old->slip;
             r.normalForce = old->normalForce;
@@ -633,7 +634,11 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
             ++a.changes;
             if (a.changes >= maxChangesPerStep) ++counts.chattering;
         }
-        if (d.bondBroken) ++counts.bondsBroken;
+        if (d.bondBroken)
+        {
+            ++counts.bondsBroken;
+            r.bondBroken = true;
+        }
         r.normalForce = isClosed(r.state) ? q.Fn : 0;
         r.shearForce = r.state == contactState::sliding ? a.friction
                      : r.state == contactState::bonded ? q.Fs : 0;

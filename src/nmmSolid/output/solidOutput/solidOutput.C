@@ -331,6 +331,14 @@ namespace
 constexpr std::size_t contactIdColumns = 6;
 constexpr std::size_t contactValueColumns = 10;
 
+//- The bond of a contact in its id row: 0 none, 1 intact, 2 broken
+//  (states written before broken bonds were kept have 0 and 1 only)
+std::int32_t bondNumber(const contactRecord& r)
+{
+    return r.bondIntact ? 1 : r.bondBroken ? 2 : 0;
+}
+
+
 void writeContacts(hdf5File& out, const std::vector<contactRecord>& contacts)
 {
     out.writeAttribute("/", "nContacts", std::int64_t(contacts.size()));
@@ -342,7 +350,7 @@ void writeContacts(hdf5File& out, const std::vector<contactRecord>& contacts)
         ids.values.insert(ids.values.end(),
         {
             r.vertexLoop, r.vertex, r.edgeLoop, r.edge,
-            contactStateNumber(r.state), std::int32_t(r.bondIntact)
+            contactStateNumber(r.state), bondNumber(r)
         });
         values.values.insert(values.values.end(),
         {
@@ -408,13 +416,14 @@ std::vector<contactRecord> readContacts
         r.edgeLoop = ids(i, 2);
         r.edge = ids(i, 3);
         if (ids.rows != values.rows || std::size_t(std::max(r.vertexLoop, r.edgeLoop)) >= nLoops
-         || ids(i, 4) < 0 || ids(i, 4) > 2)
+         || ids(i, 4) < 0 || ids(i, 4) > 2 || ids(i, 5) < 0 || ids(i, 5) > 2)
         {
             throw fatalError(file.string() + ": contact " + std::to_string(i)
                 + " does not belong to this model's contact boundaries");
         }
         r.state = static_cast<contactState>(ids(i, 4));
-        r.bondIntact = ids(i, 5) != 0;
+        r.bondIntact = ids(i, 5) == 1;
+        r.bondBroken = ids(i, 5) == 2;
         r.shearForce = values(i, 0);
         r.slip = values(i, 1);
         r.normalForce = values(i, 2);
@@ -546,7 +555,7 @@ vtkPointSet solidOutput::contactFrame(const nmmSolidModel& model)
     if (!cm) return set;
     const auto patchD = model.patchDisplacements();
     const auto& loops = cm->boundaries().loops();
-    std::vector<std::int32_t> state, bond, blockA, blockB;
+    std::vector<std::int32_t> state, bond, broken, blockA, blockB;
     std::vector<double> fn, fs, penetration, slip, length;
     std::vector<Eigen::Vector2d> normal, traction;
     for (const contactRecord& r : model.state().contacts)
@@ -557,6 +566,7 @@ vtkPointSet solidOutput::contactFrame(const nmmSolidModel& model)
         ));
         state.push_back(contactStateNumber(r.state));
         bond.push_back(r.bondIntact);
+        broken.push_back(r.bondBroken);
         blockA.push_back(loops[r.vertexLoop].block);
         blockB.push_back(loops[r.edgeLoop].block);
         fn.push_back(r.normalForce);
@@ -571,6 +581,7 @@ vtkPointSet solidOutput::contactFrame(const nmmSolidModel& model)
     namespace f = vtkFieldNames;
     set.addPointData(vtkDataArray::int32(f::contactState, std::move(state)));
     set.addPointData(vtkDataArray::int32(f::bondIntact, std::move(bond)));
+    set.addPointData(vtkDataArray::int32(f::bondBroken, std::move(broken)));
     set.addPointData(vtkDataArray::scalar(f::normalForce, std::move(fn)));
     set.addPointData(vtkDataArray::scalar(f::shearForce, std::move(fs)));
     set.addPointData(vtkDataArray::scalar(f::penetration, std::move(penetration)));
