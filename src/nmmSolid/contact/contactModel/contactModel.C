@@ -111,6 +111,28 @@ void addOuter
     }
 }
 
+//- Where each stored entry of A (in storage order) is among the values of
+//  B, whose pattern holds A's: both columns are sorted, so one walk each
+std::vector<int> slotsIn
+(
+    const Eigen::SparseMatrix<double>& A,
+    const Eigen::SparseMatrix<double>& B
+)
+{
+    std::vector<int> slots(std::size_t(A.nonZeros()));
+    const int* bInner = B.innerIndexPtr();
+    for (int j = 0; j < A.outerSize(); ++j)
+    {
+        int b = B.outerIndexPtr()[j];
+        for (int a = A.outerIndexPtr()[j]; a < A.outerIndexPtr()[j + 1]; ++a)
+        {
+            while (bInner[b] != A.innerIndexPtr()[a]) ++b;
+            slots[std::size_t(a)] = b;
+        }
+    }
+    return slots;
+}
+
 } // End anonymous namespace
 
 
@@ -337,44 +359,113 @@ void contactModel::capStuckShearForce(active& a) const
 
 contactModel::sparseMatrix contactModel::withPattern(const sparseMatrix& K)
 {
-    std::vector<Eigen::Triplet<double>> zeros;
-    for (const active& a : active_)
+    if (!K.isCompressed())
     {
-        addOuter(a.g, 0.0, zeros);
-        addOuter(a.h, 0.0, zeros);
+        sparseMatrix compressed = K;
+        compressed.makeCompressed();
+        return withPattern(compressed);
+    }
+    // A contact's terms couple all its unknowns (their dofs, sorted and
+    // unique): a clique, shared by its normal and shear terms and by
+    // the contacts between the same elements
+    std::map<std::vector<int>, int> index;
+    std::vector<int> keys;
+    std::vector<std::array<int, 2>> cliqueOf(active_.size());
+    const auto cliqueOfTerms = [&](const terms& t)
+    {
+        std::vector<int> dofs(t.size());
+        for (std::size_t i = 0; i < t.size(); ++i) dofs[i] = t[i].first;
+        const auto [it, fresh] = index.try_emplace(std::move(dofs), int(index.size()));
+        if (fresh)
+        {
+            keys.push_back(int(it->first.size()));
+            keys.insert(keys.end(), it->first.begin(), it->first.end());
+        }
+        return it->second;
+    };
+    for (std::size_t c = 0; c < active_.size(); ++c)
+    {
+        cliqueOf[c] = {cliqueOfTerms(active_[c].g), cliqueOfTerms(active_[c].h)};
+    }
+
+    const bool same = keys == cliqueKeys_ && K.rows() == stepMatrix_.rows()
+        && std::equal(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1,
+                      kOuter_.begin(), kOuter_.end())
+        && std::equal(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros(),
+                      kInner_.begin(), kInner_.end());
+    if (same)
+    {
+        // K + 0 is K, bit for bit
+        double* values = stepMatrix_.valuePtr();
+        std::fill(values, values + stepMatrix_.nonZeros(), 0.0);
+        for (std::size_t k = 0; k < kSlots_.size(); ++k) values[kSlots_[k]] = K.valuePtr()[k];
+    }
+    else
+    {
+        makeStepPattern(K, index);
+        cliqueKeys_ = std::move(keys);
+    }
+
+    const auto fill = [this](const terms& t, int clique, std::vector<int>& out)
+    {
+        const std::vector<int>& slots = cliqueSlots_[std::size_t(clique)];
+        const std::size_t m = t.size();
+        out.resize(m*m);
+        for (std::size_t a = 0; a < m; ++a)
+        {
+            for (std::size_t b = 0; b < m; ++b) out[a*m + b] = slots[b*m + a];
+        }
+    };
+    for (std::size_t c = 0; c < active_.size(); ++c)
+    {
+        fill(active_[c].g, cliqueOf[c][0], active_[c].gSlots);
+        fill(active_[c].h, cliqueOf[c][1], active_[c].hSlots);
+    }
+    return stepMatrix_;
+}
+
+
+void contactModel::makeStepPattern
+(
+    const sparseMatrix& K,
+    const std::map<std::vector<int>, int>& cliques
+)
+{
+    std::vector<Eigen::Triplet<double>> zeros;
+    for (const auto& [dofs, c] : cliques)
+    {
+        for (const int i : dofs)
+        {
+            for (const int j : dofs) zeros.emplace_back(i, j, 0.0);
+        }
     }
     sparseMatrix Z(K.rows(), K.cols());
     Z.setFromTriplets(zeros.begin(), zeros.end());
-    sparseMatrix result = K + Z;
-    result.makeCompressed();
+    stepMatrix_ = K + Z;
+    stepMatrix_.makeCompressed();
+    kOuter_.assign(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1);
+    kInner_.assign(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros());
+    kSlots_ = slotsIn(K, stepMatrix_);
 
-    const auto slot = [&result](int i, int j)
+    // Each clique's column b, rows a, at [b m + a]: the rows are sorted,
+    // so one walk down each column
+    cliqueSlots_.assign(cliques.size(), {});
+    const int* inner = stepMatrix_.innerIndexPtr();
+    for (const auto& [dofs, c] : cliques)
     {
-        const int* first = result.innerIndexPtr() + result.outerIndexPtr()[j];
-        const int* last = result.innerIndexPtr() + result.outerIndexPtr()[j + 1];
-        return int(std::lower_bound(first, last, i) - result.innerIndexPtr());
-    };
-    const auto slots = [&slot](const terms& t, std::vector<int>& out)
-    {
-        out.clear();
-        for (const auto& [i, ci] : t)
+        std::vector<int>& slots = cliqueSlots_[std::size_t(c)];
+        slots.resize(dofs.size()*dofs.size());
+        std::size_t n = 0;
+        for (const int j : dofs)
         {
-            for (const auto& [j, cj] : t) out.push_back(slot(i, j));
+            int at = stepMatrix_.outerIndexPtr()[j];
+            for (const int i : dofs)
+            {
+                while (inner[at] != i) ++at;
+                slots[n++] = at;
+            }
         }
-    };
-    const auto sameDofs = [](const terms& x, const terms& y)
-    {
-        return std::equal(x.begin(), x.end(), y.begin(), y.end(),
-            [](const auto& p, const auto& q) { return p.first == q.first; });
-    };
-    for (active& a : active_)
-    {
-        slots(a.g, a.gSlots);
-        // n.Delta and s.Delta of the same two points: the same unknowns
-        if (sameDofs(a.g, a.h)) a.hSlots = a.gSlots;
-        else slots(a.h, a.hSlots);
     }
-    return result;
 }
 
 

@@ -466,21 +466,29 @@ nmmAssembler::system nmmAssembler::assemble
 {
     const double t1 = s.time + dt;
     const Eigen::Index n = Eigen::Index(nUnknowns());
-    triplets K;
+    triplets& K = pattern_.triplets();
+    K.clear();
     system sys;
     sys.f = Eigen::VectorXd::Zero(n);
     const auto patchD = space_.patchDisplacements(s.D);
     addElements(s, patchD, K, sys.f);
     addBodyForce(sys.f);
     addSegments(s, patchD, t1, K, sys.f);
-
-    sys.K.resize(n, n);
-    sys.K.setFromTriplets(K.begin(), K.end());
     if (scheme.dynamic())
     {
-        sys.K += scheme.massFactor(dt)*M_;
+        // After the elements' terms, so each entry is their sum plus the
+        // mass term, as K + c M would give
+        const double c = scheme.massFactor(dt);
+        for (int j = 0; j < M_.outerSize(); ++j)
+        {
+            for (sparseMatrix::InnerIterator it(M_, j); it; ++it)
+            {
+                K.emplace_back(int(it.row()), j, c*it.value());
+            }
+        }
         sys.f += M_*(scheme.velocityFactor(dt)*s.V + scheme.accelerationFactor()*s.A);
     }
+    sys.K = pattern_.assemble(n, n);
     return sys;
 }
 

@@ -145,7 +145,7 @@ void penaltyOpenClose::beginStep
     loads_ = sys.f + contacts_->pressureLoads(sys.f.size());
     clock = cpuTime();
     pattern_ = contacts_->withPattern(sys.K);
-    addTime(srv, "contact assembly", clock);
+    addTime(srv, "contact pattern", clock);
     factorised_ = false;
 }
 

@@ -1,0 +1,143 @@
+// Unit tests of nmm::patternCache: triplets summed into a kept pattern
+// against Eigen's setFromTriplets of the same list, bit for bit, when the
+// pattern is reused and when the positions change.
+
+#include "nmmSolid/solver/patternCache/patternCache.H"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace
+{
+
+using nmm::patternCache;
+using sparseMatrix = Eigen::SparseMatrix<double>;
+
+//- n x n positions with duplicates (about a third of the list repeats an
+//  earlier position, as element matrices sharing unknowns do)
+std::vector<std::pair<int, int>> randomPositions(int n, int count, unsigned seed)
+{
+    std::mt19937 gen(seed);
+    std::uniform_int_distribution<int> index(0, n - 1);
+    std::vector<std::pair<int, int>> p;
+    for (int t = 0; t < count; ++t)
+    {
+        if (t > 0 && t % 3 == 0) p.push_back(p[std::size_t(index(gen)) % p.size()]);
+        else p.emplace_back(index(gen), index(gen));
+    }
+    return p;
+}
+
+
+void fill
+(
+    patternCache& cache,
+    const std::vector<std::pair<int, int>>& positions,
+    unsigned seed
+)
+{
+    std::mt19937 gen(seed);
+    std::uniform_real_distribution<double> value(-1, 1);
+    auto& t = cache.triplets();
+    t.clear();
+    for (const auto& [i, j] : positions) t.emplace_back(i, j, value(gen)*1e3);
+}
+
+
+sparseMatrix direct(const std::vector<Eigen::Triplet<double>>& t, int n)
+{
+    sparseMatrix A(n, n);
+    A.setFromTriplets(t.begin(), t.end());
+    return A;
+}
+
+
+void expectIdentical(const sparseMatrix& a, const sparseMatrix& b)
+{
+    ASSERT_EQ(a.rows(), b.rows());
+    ASSERT_EQ(a.nonZeros(), b.nonZeros());
+    for (int j = 0; j <= a.outerSize(); ++j)
+    {
+        ASSERT_EQ(a.outerIndexPtr()[j], b.outerIndexPtr()[j]);
+    }
+    for (int k = 0; k < a.nonZeros(); ++k)
+    {
+        ASSERT_EQ(a.innerIndexPtr()[k], b.innerIndexPtr()[k]);
+        // Exactly equal: the runs must not depend on the path
+        ASSERT_EQ(a.valuePtr()[k], b.valuePtr()[k]) << "entry " << k;
+    }
+}
+
+} // End anonymous namespace
+
+
+TEST(patternCache, sumsAsSetFromTripletsBitForBit)
+{
+    const int n = 40;
+    const auto positions = randomPositions(n, 900, 1);
+    patternCache cache;
+    fill(cache, positions, 2);
+    const sparseMatrix& A = cache.assemble(n, n);
+    expectIdentical(A, direct(cache.triplets(), n));
+    EXPECT_EQ(cache.made(), 1);
+    EXPECT_EQ(cache.reused(), 0);
+}
+
+
+TEST(patternCache, theSamePositionsReuseThePatternWithNewValues)
+{
+    const int n = 40;
+    const auto positions = randomPositions(n, 900, 3);
+    patternCache cache;
+    fill(cache, positions, 4);
+    cache.assemble(n, n);
+    for (unsigned step = 5; step < 8; ++step)
+    {
+        fill(cache, positions, step);
+        const sparseMatrix& A = cache.assemble(n, n);
+        expectIdentical(A, direct(cache.triplets(), n));
+    }
+    EXPECT_EQ(cache.made(), 1);
+    EXPECT_EQ(cache.reused(), 3);
+}
+
+
+TEST(patternCache, changedPositionsMakeANewPattern)
+{
+    const int n = 40;
+    auto positions = randomPositions(n, 900, 9);
+    patternCache cache;
+    fill(cache, positions, 10);
+    cache.assemble(n, n);
+
+    // One position moved, one added: a stale pattern would put a value
+    // where the matrix has no entry, or drop one
+    positions[17] = {n - 1, 0};
+    positions.emplace_back(0, n - 1);
+    fill(cache, positions, 11);
+    expectIdentical(cache.assemble(n, n), direct(cache.triplets(), n));
+
+    // Another size with the same list
+    fill(cache, positions, 12);
+    expectIdentical(cache.assemble(n + 5, n + 5), direct(cache.triplets(), n + 5));
+    EXPECT_EQ(cache.made(), 3);
+}
+
+
+TEST(patternCache, slotsAreWhereEachTripletWasSummed)
+{
+    const int n = 30;
+    const auto positions = randomPositions(n, 500, 13);
+    patternCache cache;
+    fill(cache, positions, 14);
+    const sparseMatrix& A = cache.assemble(n, n);
+    for (std::size_t t = 0; t < positions.size(); ++t)
+    {
+        const int s = cache.slot(t);
+        const auto [i, j] = positions[t];
+        ASSERT_GE(s, A.outerIndexPtr()[j]);
+        ASSERT_LT(s, A.outerIndexPtr()[j + 1]);
+        ASSERT_EQ(A.innerIndexPtr()[s], i);
+    }
+}
