@@ -3,6 +3,8 @@
 #include <Eigen/CholmodSupport>
 #include <cholmod.h>
 
+#include <dlfcn.h>
+
 #include <cmath>
 
 namespace nmm
@@ -39,6 +41,40 @@ const char* orderingName(int ordering)
         default:              return "unknown";
     }
 }
+
+//- OpenMP's parallel regions inactive while it lives (see the
+//  Description), and the setting as it was after: a host process (the
+//  FMU's importer) keeps its own. The functions are looked up where
+//  CHOLMOD loaded them: a CHOLMOD built without OpenMP needs nothing, and
+//  the library is not compiled with -fopenmp (which would thread Eigen's
+//  dense products as well)
+class serialOpenMP
+{
+    using getLevels = int (*)();
+    using setLevels = void (*)(int);
+    static getLevels get() { return reinterpret_cast<getLevels>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels")); }
+    static setLevels set() { return reinterpret_cast<setLevels>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels")); }
+    int levels_ = -1;
+
+public:
+    serialOpenMP()
+    {
+        static const getLevels g = get();
+        static const setLevels s = set();
+        if (g && s)
+        {
+            levels_ = g();
+            s(0);
+        }
+    }
+    ~serialOpenMP()
+    {
+        static const setLevels s = set();
+        if (levels_ >= 0) s(levels_);
+    }
+    serialOpenMP(const serialOpenMP&) = delete;
+    serialOpenMP& operator=(const serialOpenMP&) = delete;
+};
 
 } // End anonymous namespace
 
@@ -114,7 +150,10 @@ Eigen::VectorXd cholmod::pivots() const
 void cholmod::factoriseNumeric(const sparseMatrix& K)
 {
     auto& llt = impl_->llt;
-    llt.factorize(K);
+    {
+        const serialOpenMP serial;
+        llt.factorize(K);
+    }
     const cholmod_factor* L = llt.factor();
     if (!L || !L->is_super || L->xtype != CHOLMOD_REAL)
     {
@@ -133,6 +172,7 @@ void cholmod::factoriseNumeric(const sparseMatrix& K)
 
 Eigen::MatrixXd cholmod::solveFactorised(const Eigen::MatrixXd& f) const
 {
+    const serialOpenMP serial;
     return impl_->llt.solve(f);
 }
 
