@@ -3,6 +3,7 @@
 #include "nmmSolid/global/clock/cpuTime.H"
 #include "nmmSolid/space/manifoldSpace/manifoldSpace.H"
 
+#include <limits>
 #include <ostream>
 #include <sstream>
 
@@ -63,6 +64,10 @@ const keywordTable& penaltyOpenClose::keywords()
             " (normalPenalty/2.5) or a number > 0").defaultValue("auto");
         t.integer("maxOpenCloseIterations", "open-close iterations before"
             " the step is cut and redone").defaultValue(8).atLeast(1);
+        t.scalar("residualTolerance", "the iteration has also settled when"
+            " its relative residual with the states it chose is below this"
+            " (states that switch at rounding, carrying no force); 0: only"
+            " when no state switches", "").defaultValue(1e-9).atLeast(0).below(1e-3);
         t.any("searchDistance", "contact search distance [m]: auto"
             " (2.5 maxDisplacementRatio x half the model size) or a number > 0")
             .defaultValue("auto");
@@ -84,6 +89,7 @@ penaltyOpenClose::penaltyOpenClose(const dictionary& d, const keywordTable& k)
     given_.normalPenalty = autoOrPositive(d, "normalPenalty");
     given_.shearPenalty = autoOrPositive(d, "shearPenalty");
     given_.maxOpenCloseIterations = k.get<int>(d, "maxOpenCloseIterations");
+    given_.residualTolerance = k.get<double>(d, "residualTolerance");
     given_.searchDistance = autoOrPositive(d, "searchDistance");
 }
 
@@ -189,19 +195,25 @@ bool penaltyOpenClose::openClose
         // How far dd is from balance with the states the next solve takes:
         // small where only states at rounding switch, of order one where
         // the iteration has not found the step's states
-        const double residual = relativeResidual(sys, dd);
+        const auto [residual, ofLoads] = relativeResiduals(sys, dd);
         addTime(srv, "contact update", clock);
         ++report.iterations;
         report.contacts = counts.states;
         report.bondsBroken += counts.bondsBroken;
         logIteration(srv.log, report.iterations, counts, alpha, residual);
-        settled = alpha == 1 && counts.changes == 0 && counts.frictionSettled();
+        // States that still switch while the iterate balances the loads of
+        // the states they switch to, to rounding, carry no force. Measured
+        // against the step's loads: against the springs' forces (the
+        // logged residual) a stiff penalty hides a contact force that is
+        // far off
+        settled = (alpha == 1 && counts.changes == 0 && counts.frictionSettled())
+               || ofLoads < given_.residualTolerance;
     }
     return settled;
 }
 
 
-double penaltyOpenClose::relativeResidual
+std::pair<double, double> penaltyOpenClose::relativeResiduals
 (
     const nmmAssembler::system& sys,
     const Eigen::VectorXd& dd
@@ -211,7 +223,12 @@ double penaltyOpenClose::relativeResidual
     const Eigen::VectorXd f = loads_ + contacts_->forces(n);
     const Eigen::VectorXd r = update_.residual(contacts_->springStiffnesses(), dd, f);
     const double scale = std::max(f.norm(), (r + f).norm());
-    return scale > 0 ? r.norm()/scale : 0.0;
+    const double loads = loads_.norm();
+    return
+    {
+        scale > 0 ? r.norm()/scale : 0.0,
+        loads > 0 ? r.norm()/loads : std::numeric_limits<double>::infinity()
+    };
 }
 
 
