@@ -97,20 +97,6 @@ double along(const std::vector<std::pair<int, double>>& t, const Eigen::VectorXd
 }
 
 
-//- Outer product k a b^T of two term lists into triplets
-void addOuter
-(
-    const std::vector<std::pair<int, double>>& a,
-    double k,
-    std::vector<Eigen::Triplet<double>>& K
-)
-{
-    for (const auto& [i, ci] : a)
-    {
-        for (const auto& [j, cj] : a) K.emplace_back(i, j, k*ci*cj);
-    }
-}
-
 //- Where each stored entry of A (in storage order) is among the values of
 //  B, whose pattern holds A's: both columns are sorted, so one walk each
 std::vector<int> slotsIn
