@@ -65,9 +65,10 @@ const keywordTable& penaltyOpenClose::keywords()
         t.integer("maxOpenCloseIterations", "open-close iterations before"
             " the step is cut and redone").defaultValue(8).atLeast(1);
         t.scalar("residualTolerance", "the iteration has also settled when"
-            " its relative residual with the states it chose is below this"
-            " (states that switch at rounding, carrying no force); 0: only"
-            " when no state switches", "").defaultValue(1e-9).atLeast(0).below(1e-3);
+            " its residual with the states it chose, over the step's loads,"
+            " is below this (states that switch at rounding carry no force);"
+            " 0: only when no state switches", "")
+            .defaultValue(1e-9).atLeast(0).below(1e-3);
         t.any("searchDistance", "contact search distance [m]: auto"
             " (2.5 maxDisplacementRatio x half the model size) or a number > 0")
             .defaultValue("auto");
