@@ -68,7 +68,7 @@ const keywordTable& penaltyOpenClose::keywords()
             " its residual with the states it chose, over the step's loads,"
             " is below this (states that switch at rounding carry no force);"
             " 0: only when no state switches", "")
-            .defaultValue(1e-9).atLeast(0).below(1e-3);
+            .defaultValue(0).atLeast(0).below(1e-3);
         t.any("searchDistance", "contact search distance [m]: auto"
             " (2.5 maxDisplacementRatio x half the model size) or a number > 0")
             .defaultValue("auto");
