@@ -3,6 +3,8 @@
 #include "nmmSolid/cover/physicalCover/physicalCover.H"
 #include "nmmSolid/space/manifoldSpace/manifoldSpace.H"
 
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -770,6 +772,177 @@ void contactModel::augment()
         r.multiplier -= a.kN*r.gap;
         if (!r.bondIntact) r.multiplier = std::max(r.multiplier, 0.0);
     }
+}
+
+
+Eigen::Vector2d contactModel::startForces(std::size_t i) const
+{
+    const contactRecord& r = active_[i].record;
+    if (!isClosed(r.state)) return Eigen::Vector2d::Zero();
+    return {r.normalForce, r.shearForce};
+}
+
+
+Eigen::Vector2d contactModel::relax
+(
+    std::size_t i,
+    const Eigen::Vector2d& rho,
+    const Eigen::Matrix2d& W,
+    bool& changed
+)
+{
+    active& a = active_[i];
+    contactRecord& r = a.record;
+    const contactState before = r.state;
+    const double gapFree = a.gap0 + rho[0];
+    a.overloaded = false;
+
+    Eigen::Vector2d lambda = Eigen::Vector2d::Zero();
+    contactDecision d;
+    d.state = contactState::open;
+    d.bondIntact = r.bondIntact;
+    // Apart without its force and nothing to hold it: open, without
+    // asking the law (an open contact's trial forces would be tension)
+    if (r.state != contactState::open || gapFree < 0 || r.bondIntact)
+    {
+        // The stick solution: both springs on, with the forces they
+        // carry from the last step (multiplier and shear force)
+        const double lambda0 = isClosed(r.state) ? r.multiplier : 0.0;
+        Eigen::Matrix2d A = Eigen::Matrix2d::Identity();
+        A.row(0) += a.kN*W.row(0);
+        A.row(1) += a.kS*W.row(1);
+        const Eigen::Vector2d b(lambda0 - a.kN*gapFree, a.shearForce0 - a.kS*rho[1]);
+        lambda = A.inverse()*b;
+
+        contactQuery q;
+        q.state = r.state;
+        q.bondIntact = r.bondIntact;
+        q.gap = gapFree + W.row(0).dot(lambda);
+        q.Fn = lambda[0];
+        q.Fs = lambda[1];
+        q.length = r.length*thickness_;
+        d = a.law->decide(q);
+        if (holdFriction_ && d.state == contactState::sliding) d.state = contactState::bonded;
+        if (d.bondBroken)
+        {
+            // Broken only once the others have settled too: the forces of
+            // an unsettled iterate can be far off
+            a.overloaded = true;
+            d.state = contactState::bonded;
+            d.bondIntact = true;
+            d.bondBroken = false;
+        }
+        if (d.state != contactState::bonded) lambda = slipSolution(a, q, gapFree, W, d);
+    }
+    r.state = d.state;
+    r.bondIntact = d.bondIntact;
+    if (!isClosed(r.state)) r.multiplier = 0;
+    r.normalForce = lambda[0];
+    r.shearForce = lambda[1];
+    a.friction = r.state == contactState::sliding ? lambda[1] : 0.0;
+    changed = r.state != before;
+    return lambda;
+}
+
+
+contactModel::stateEquations contactModel::equations(std::size_t i) const
+{
+    const active& a = active_[i];
+    const contactRecord& r = a.record;
+    stateEquations e;
+    e.state = r.state;
+    if (!isClosed(r.state)) return e;
+    e.compliance = {1/a.kN, 1/a.kS};
+    e.rhs = {r.multiplier/a.kN - a.gap0, a.shearForce0/a.kS};
+    if (r.state == contactState::sliding && r.normalForce > 0)
+    {
+        e.friction = a.friction/r.normalForce;
+    }
+    return e;
+}
+
+
+void contactModel::setForces(std::size_t i, const Eigen::Vector2d& lambda)
+{
+    active& a = active_[i];
+    a.record.normalForce = lambda[0];
+    a.record.shearForce = lambda[1];
+    if (a.record.state == contactState::sliding) a.friction = lambda[1];
+}
+
+
+void contactModel::setForces
+(
+    std::size_t i,
+    const Eigen::Vector2d& lambda,
+    contactState s
+)
+{
+    active_[i].record.state = s;
+    setForces(i, lambda);
+}
+
+
+Eigen::Vector2d contactModel::slipSolution
+(
+    const active& a,
+    const contactQuery& trial,
+    double gapFree,
+    const Eigen::Matrix2d& W,
+    contactDecision& d
+) const
+{
+    // The friction acts along the stick solution's shear force (a return
+    // mapping onto the friction cone) and moves the gap by W_nt, so the
+    // normal force is solved with it. The stick solution's normal force
+    // is not the one to judge opening by: its shear force, which the
+    // friction replaces, can be far larger and pull the gap open through
+    // W_nt. The friction per unit normal force is the law's at unit
+    // compression
+    contactQuery s = trial;
+    s.Fn = 1;
+    const double perUnit = a.law->slidingFriction(s);
+    const double lambda0 = a.record.multiplier;
+    const double soft = 1 + a.kN*(W(0, 0) + W(0, 1)*perUnit);
+    const double Fn = (lambda0 - a.kN*gapFree)/soft;
+    if (!(soft > 0) || !(Fn > 0))
+    {
+        d.state = contactState::open;
+        return Eigen::Vector2d::Zero();
+    }
+    d.state = contactState::sliding;
+    s.Fn = Fn;
+    return {Fn, a.law->slidingFriction(s)};
+}
+
+
+long contactModel::breakOverloadedBonds()
+{
+    long broken = 0;
+    for (active& a : active_)
+    {
+        if (!a.overloaded) continue;
+        a.overloaded = false;
+        a.record.bondIntact = false;
+        a.record.bondBroken = true;
+        ++broken;
+    }
+    return broken;
+}
+
+
+contactModel::iterationCounts contactModel::settleForces(const Eigen::VectorXd& dd)
+{
+    iterationCounts counts;
+    for (active& a : active_)
+    {
+        contactRecord& r = a.record;
+        a.dn = along(a.g, dd);
+        a.ds = along(a.h, dd);
+        r.gap = a.gap0 + a.dn;
+        ++counts.states[contactStateNumber(r.state)];
+    }
+    return counts;
 }
 
 

@@ -58,6 +58,12 @@ mohrCoulomb::mohrCoulomb(const dictionary& dict)
 }
 
 
+double mohrCoulomb::slidingFriction(const contactQuery& q) const
+{
+    return sign(q.Fs)*std::max(q.effectiveNormalForce(), 0.0)*tanPhi_;
+}
+
+
 contactDecision mohrCoulomb::decide(const contactQuery& q) const
 {
     const double N = q.effectiveNormalForce();

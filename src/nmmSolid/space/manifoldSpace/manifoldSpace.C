@@ -18,27 +18,29 @@ manifoldSpace::manifoldSpace
     cover_(cover),
     pc_(pc),
     updateGeometry_(updateGeometry)
-{}
-
-
-std::vector<manifoldSpace::dofTerm> manifoldSpace::dofTerms(label e) const
 {
-    std::vector<dofTerm> terms;
     // Two per corner of an element whose patches are not extended
-    terms.reserve(6);
-    for (int k = 0; k < 3; ++k)
+    const std::size_t nElements = pc_.elements().size();
+    terms_.reserve(6*nElements);
+    termStart_.reserve(nElements + 1);
+    for (std::size_t e = 0; e < nElements; ++e)
     {
-        const label p = pc_.elements()[e].patches[k];
-        for (auto t = pc_.extensionBegin(p); t != pc_.extensionEnd(p); ++t)
+        termStart_.push_back(terms_.size());
+        for (int k = 0; k < 3; ++k)
         {
-            for (int c = 0; c < 2; ++c)
+            const label p = pc_.elements()[e].patches[k];
+            for (auto t = pc_.extensionBegin(p); t != pc_.extensionEnd(p); ++t)
             {
-                terms.push_back({2*k + c, 2*t->unknownPatch + c, t->coefficient});
+                for (int c = 0; c < 2; ++c)
+                {
+                    terms_.push_back({2*k + c, 2*t->unknownPatch + c, t->coefficient});
+                }
             }
         }
     }
-    return terms;
+    termStart_.push_back(terms_.size());
 }
+
 
 
 Eigen::VectorXd manifoldSpace::elementDisplacements(label e, const Eigen::VectorXd& D) const

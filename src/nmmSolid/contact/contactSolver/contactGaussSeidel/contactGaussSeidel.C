@@ -1,0 +1,508 @@
+#include "nmmSolid/contact/contactSolver/contactGaussSeidel/contactGaussSeidel.H"
+
+#include "nmmSolid/global/clock/cpuTime.H"
+#include "nmmSolid/global/fatalError/fatalError.H"
+#include "nmmSolid/solver/linearSolver/singularSystem/singularSystem.H"
+
+#include <Eigen/LU>
+#include <Eigen/SparseLU>
+
+#include <cmath>
+#include <cstdlib>
+#include <ostream>
+#include <sstream>
+
+namespace nmm
+{
+
+addToRunTimeSelectionTable(contactSolver, contactGaussSeidel, "gaussSeidel");
+
+namespace
+{
+
+//- Sweeps without a state change after which the forces are solved for
+//  directly, and how often a step may do so
+constexpr int quietSweeps = 3;
+//- Direct solves in a row before Gauss-Seidel takes over again
+constexpr int maxActiveSetSolves = 8;
+
+//- Up to this many closed contacts' rows the direct solve is dense
+constexpr int denseContactRows = 40;
+
+
+void addTime(const contactSolver::services& s, const char* part, const cpuTime& clock)
+{
+    if (s.timing) (*s.timing)[part] += clock.elapsed();
+}
+
+
+double along(const contactModel::terms& t, const Eigen::VectorXd& x)
+{
+    double s = 0;
+    for (const auto& [dof, c] : t) s += c*x[dof];
+    return s;
+}
+
+} // End anonymous namespace
+
+
+const keywordTable& contactGaussSeidel::keywords()
+{
+    static const keywordTable table = []
+    {
+        keywordTable t("contact", "method gaussSeidel: the penalty springs"
+            " and their law solved in contact space, each body factorised on"
+            " its own, the contacts relaxed one by one");
+        t.include(penaltyOpenClose::keywords());
+        t.scalar("tolerance", "the sweeps have settled when the contact"
+            " forces change by less than this fraction of their size", "")
+            .defaultValue(1e-6).above(0).below(1e-2);
+        t.integer("maxSweeps", "Gauss-Seidel sweeps over the contacts before"
+            " the step is cut and redone").defaultValue(1000).atLeast(1);
+        return t;
+    }();
+    return table;
+}
+
+
+contactGaussSeidel::contactGaussSeidel(const dictionary& d)
+:
+    penaltyOpenClose(d, keywords())
+{
+    const keywordTable& k = keywords();
+    tolerance_ = k.get<double>(d, "tolerance");
+    maxSweeps_ = k.get<int>(d, "maxSweeps");
+}
+
+
+bool contactGaussSeidel::solve
+(
+    const nmmAssembler::system& sys,
+    const Eigen::Matrix2Xd& patchD0,
+    const std::vector<contactRecord>& history,
+    bool atStart,
+    const services& srv,
+    stepReport& report,
+    Eigen::VectorXd& dd
+)
+{
+    cpuTime clock;
+    try
+    {
+        bodies_.factorise(sys.K);
+    }
+    catch (const singularSystem&)
+    {
+        // A body held only by its contacts: no contact space without mass
+        if (!fellBack_ && srv.log)
+        {
+            *srv.log << "    gaussSeidel: a body's matrix is singular (a static"
+                " step), so this step and any like it are solved by the penalty"
+                " method's open-close iteration\n";
+        }
+        fellBack_ = true;
+        byPenalty_ = true;
+        const bool solved =
+            penaltyOpenClose::solve(sys, patchD0, history, atStart, srv, report, dd);
+        byPenalty_ = false;
+        return solved;
+    }
+    addTime(srv, "body factorisation", clock);
+    ++report.factorisations;
+
+    clock = cpuTime();
+    contacts().beginStep(patchD0, history, atStart);
+    addTime(srv, "contact detection", clock);
+
+    clock = cpuTime();
+    const long n = long(sys.f.size());
+    const Eigen::VectorXd ddFree = bodies_.solve(sys.f + contacts().pressureLoads(n));
+    addTime(srv, "solution", clock);
+
+    // The contacts closed at the start or that the free motion closes;
+    // the others join when the solution would close them
+    const std::size_t nc = contacts().size();
+    free_.resize(nc);
+    included_.assign(nc, 0);
+    for (std::size_t i = 0; i < nc; ++i)
+    {
+        free_[i] = {along(contacts().springTerms(2*i), ddFree),
+                    along(contacts().springTerms(2*i + 1), ddFree)};
+        included_[i] = isClosed(contacts().state(i)) || contacts().startGap(i) + free_[i][0] < 0;
+    }
+    int sweeps = 0;
+    bool settled = false;
+    for (long joined = 1; joined > 0;)
+    {
+        clock = cpuTime();
+        buildContactSpace();
+        addTime(srv, "contact operator", clock);
+        clock = cpuTime();
+        const auto [n, ok] = sweep(report, srv.log);
+        sweeps += n;
+        settled = ok;
+        dd = increment(ddFree);
+        joined = settled ? includeClosing(dd) : 0;
+        addTime(srv, "contact sweeps", clock);
+    }
+    const auto counts = contacts().settleForces(dd);
+    report.iterations = sweeps;
+    report.contacts = counts.states;
+    if (srv.log)
+    {
+        *srv.log << "    Gauss-Seidel: " << sweeps << " sweeps, open "
+            << counts.states[0] << ", bonded " << counts.states[1] << ", sliding "
+            << counts.states[2];
+        if (report.bondsBroken) *srv.log << ", bonds broken " << report.bondsBroken;
+        if (!settled) *srv.log << ", not settled";
+        *srv.log << '\n';
+    }
+    return endStep(settled, report, dd);
+}
+
+
+long contactGaussSeidel::includeClosing(const Eigen::VectorXd& dd)
+{
+    long joined = 0;
+    for (std::size_t i = 0; i < included_.size(); ++i)
+    {
+        if (included_[i]) continue;
+        if (contacts().startGap(i) + along(contacts().springTerms(2*i), dd) < 0)
+        {
+            included_[i] = 1;
+            ++joined;
+        }
+    }
+    return joined;
+}
+
+
+void contactGaussSeidel::buildContactSpace()
+{
+    const contactModel& c = contacts();
+    const std::size_t nc = c.size();
+    blocks_.clear();
+    sides_.assign(nc, {{{-1, -1}, {-1, -1}}});
+    std::vector<int> blockOfBody(bodies_.size(), -1);
+    for (std::size_t i = 0; i < nc; ++i)
+    {
+        if (!included_[i]) continue;
+        int nSides = 0;
+        for (int spring = 0; spring < 2; ++spring)
+        {
+            for (const auto& [dof, coefficient] : c.springTerms(2*i + std::size_t(spring)))
+            {
+                const int b = bodies_.bodyOf(dof);
+                if (blockOfBody[std::size_t(b)] < 0)
+                {
+                    blockOfBody[std::size_t(b)] = int(blocks_.size());
+                    blocks_.emplace_back();
+                    blocks_.back().body = b;
+                }
+                const int k = blockOfBody[std::size_t(b)];
+                if (sides_[i][0][0] == k || sides_[i][1][0] == k) continue;
+                if (nSides == 2)
+                {
+                    throw fatalError("contact " + std::to_string(i) + " couples more"
+                        " than two bodies");
+                }
+                bodyBlock& bb = blocks_[std::size_t(k)];
+                sides_[i][std::size_t(nSides++)] = {k, 2*int(bb.contacts.size())};
+                bb.contacts.push_back(int(i));
+            }
+        }
+    }
+
+    // Z = K_b^-1 G_b^T and W_b = G_b Z, body by body
+    const long nBlocks = long(blocks_.size());
+    #pragma omp parallel for schedule(dynamic)
+    for (long k = 0; k < nBlocks; ++k)
+    {
+        bodyBlock& bb = blocks_[std::size_t(k)];
+        const long nb = long(bodies_.dofs(std::size_t(bb.body)).size());
+        const long R = 2*long(bb.contacts.size());
+        std::vector<Eigen::Triplet<double>> t;
+        for (long r = 0; r < R; ++r)
+        {
+            const std::size_t spring = 2*std::size_t(bb.contacts[std::size_t(r/2)]) + std::size_t(r%2);
+            for (const auto& [dof, coefficient] : c.springTerms(spring))
+            {
+                if (bodies_.bodyOf(dof) == bb.body) t.emplace_back(bodies_.localOf(dof), r, coefficient);
+            }
+        }
+        // G_b^T is sparse (a contact row has the unknowns of two elements):
+        // W_b = G_b Z costs its nonzeros times the rows, not the body's size
+        Eigen::SparseMatrix<double> Gt(nb, R);
+        Gt.setFromTriplets(t.begin(), t.end());
+        bb.Z = bodies_.solveBody(std::size_t(bb.body), Eigen::MatrixXd(Gt));
+        bb.W = Gt.transpose()*bb.Z;
+        bb.lambda.resize(R);
+        for (long r = 0; r < R; r += 2)
+        {
+            bb.lambda.segment<2>(r) = c.startForces(std::size_t(bb.contacts[std::size_t(r/2)]));
+        }
+    }
+
+    Wii_.assign(nc, Eigen::Matrix2d::Zero());
+    for (std::size_t i = 0; i < nc; ++i)
+    {
+        for (const auto& [k, at] : sides_[i])
+        {
+            if (k >= 0) Wii_[i] += blocks_[std::size_t(k)].W.block<2, 2>(at, at);
+        }
+    }
+}
+
+
+Eigen::Vector2d contactGaussSeidel::lambdaOf(std::size_t i) const
+{
+    const auto& [k, at] = sides_[i][0];
+    return blocks_[std::size_t(k)].lambda.segment<2>(at);
+}
+
+
+Eigen::Vector2d contactGaussSeidel::othersOf(std::size_t i) const
+{
+    Eigen::Vector2d rho = free_[i];
+    if (sides_[i][0][0] < 0) return rho;
+    rho -= Wii_[i]*lambdaOf(i);
+    for (const auto& [k, at] : sides_[i])
+    {
+        if (k < 0) continue;
+        const bodyBlock& bb = blocks_[std::size_t(k)];
+        rho[0] += bb.W.col(at).dot(bb.lambda);
+        rho[1] += bb.W.col(at + 1).dot(bb.lambda);
+    }
+    return rho;
+}
+
+
+void contactGaussSeidel::setLambda(std::size_t i, const Eigen::Vector2d& lambda)
+{
+    for (const auto& [k, at] : sides_[i])
+    {
+        if (k >= 0) blocks_[std::size_t(k)].lambda.segment<2>(at) = lambda;
+    }
+}
+
+
+std::tuple<double, double, long> contactGaussSeidel::sweepOnce()
+{
+    double change = 0, size = 0;
+    long changes = 0;
+    contactModel& c = contacts();
+    for (std::size_t i = 0; i < sides_.size(); ++i)
+    {
+        if (sides_[i][0][0] < 0) continue;
+        const Eigen::Vector2d last = lambdaOf(i);
+        bool changed = false;
+        const Eigen::Vector2d lambda = c.relax(i, othersOf(i), Wii_[i], changed);
+        setLambda(i, lambda);
+        change += (lambda - last).squaredNorm();
+        size += lambda.squaredNorm();
+        changes += changed;
+    }
+    return {change, size, changes};
+}
+
+
+bool contactGaussSeidel::polish()
+{
+    contactModel& c = contacts();
+    const std::size_t nc = sides_.size();
+    std::vector<int> at(nc, -1);
+    std::vector<contactModel::stateEquations> eq(nc);
+    int m = 0;
+    for (std::size_t i = 0; i < nc; ++i)
+    {
+        eq[i] = c.equations(i);
+        if (isClosed(eq[i].state) && sides_[i][0][0] >= 0) { at[i] = m; m += 2; }
+    }
+    if (m == 0) return true;
+
+    std::vector<Eigen::Triplet<double>> t;
+    Eigen::VectorXd rhs(m);
+    for (std::size_t i = 0; i < nc; ++i)
+    {
+        if (at[i] < 0) continue;
+        const int r = at[i];
+        const bool sliding = eq[i].state == contactState::sliding;
+        t.emplace_back(r, r, eq[i].compliance[0]);
+        rhs[r] = eq[i].rhs[0] - free_[i][0];
+        if (sliding)
+        {
+            t.emplace_back(r + 1, r + 1, 1.0);
+            t.emplace_back(r + 1, r, -eq[i].friction);
+            rhs[r + 1] = 0;
+        }
+        else
+        {
+            t.emplace_back(r + 1, r + 1, eq[i].compliance[1]);
+            rhs[r + 1] = eq[i].rhs[1] - free_[i][1];
+        }
+    }
+    for (const bodyBlock& bb : blocks_)
+    {
+        const std::size_t nb = bb.contacts.size();
+        for (std::size_t a = 0; a < nb; ++a)
+        {
+            const std::size_t i = std::size_t(bb.contacts[a]);
+            if (at[i] < 0) continue;
+            const int rows = eq[i].state == contactState::sliding ? 1 : 2;
+            for (std::size_t b = 0; b < nb; ++b)
+            {
+                const int j = at[std::size_t(bb.contacts[b])];
+                if (j < 0) continue;
+                for (int ra = 0; ra < rows; ++ra)
+                {
+                    for (int cb = 0; cb < 2; ++cb)
+                    {
+                        t.emplace_back(at[i] + ra, j + cb, bb.W(long(2*a) + ra, long(2*b) + cb));
+                    }
+                }
+            }
+        }
+    }
+    Eigen::SparseMatrix<double> A(m, m);
+    A.setFromTriplets(t.begin(), t.end());
+    Eigen::VectorXd lambda;
+    if (m <= denseContactRows)
+    {
+        lambda = Eigen::PartialPivLU<Eigen::MatrixXd>(Eigen::MatrixXd(A)).solve(rhs);
+    }
+    else
+    {
+        Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+        lu.compute(A);
+        if (lu.info() != Eigen::Success) return false;
+        lambda = lu.solve(rhs);
+        if (lu.info() != Eigen::Success) return false;
+    }
+    if (!lambda.allFinite()) return false;
+
+    for (std::size_t i = 0; i < nc; ++i)
+    {
+        if (at[i] < 0) continue;
+        c.setForces(i, lambda.segment<2>(at[i]));
+        setLambda(i, lambda.segment<2>(at[i]));
+    }
+    return true;
+}
+
+
+long contactGaussSeidel::statesOfSolution(std::vector<int>& flips)
+{
+    // Every contact's relative displacement from the same forces, then
+    // each relaxed: a change of state is the law's answer to this
+    // solution, not to a neighbour's relaxation
+    contactModel& c = contacts();
+    const std::size_t nc = sides_.size();
+    std::vector<Eigen::Vector2d> rho(nc);
+    for (std::size_t i = 0; i < nc; ++i) rho[i] = othersOf(i);
+    long changes = 0;
+    for (std::size_t i = 0; i < nc; ++i)
+    {
+        if (sides_[i][0][0] < 0) continue;
+        const Eigen::Vector2d solved = lambdaOf(i);
+        const contactState before = c.equations(i).state;
+        bool changed = false;
+        setLambda(i, c.relax(i, rho[i], Wii_[i], changed));
+        if (!changed) continue;
+        if
+        (
+            ++flips[i] > 2 && before == contactState::sliding
+         && c.equations(i).state == contactState::bonded
+        )
+        {
+            // At the edge of its friction cone, its stick solution
+            // outside and its slip solution inside as the others follow
+            // it: it slides at its friction force, which the cone admits
+            c.setForces(i, solved, contactState::sliding);
+            setLambda(i, solved);
+            continue;
+        }
+        ++changes;
+    }
+    return changes;
+}
+
+
+bool contactGaussSeidel::activeSet(int& solves)
+{
+    std::vector<Eigen::VectorXd> iterate;
+    for (const bodyBlock& bb : blocks_) iterate.push_back(bb.lambda);
+    std::vector<int> flips(sides_.size(), 0);
+    for (int k = 0; k < maxActiveSetSolves; ++k)
+    {
+        if (!polish()) break;
+        ++solves;
+        if (statesOfSolution(flips) == 0) return true;
+    }
+    // Back to the Gauss-Seidel iterate, which a cycle of states would
+    // otherwise reset to the same solves
+    for (std::size_t k = 0; k < blocks_.size(); ++k) blocks_[k].lambda = iterate[k];
+    return false;
+}
+
+
+std::pair<int, bool> contactGaussSeidel::sweep(stepReport& report, std::ostream* log)
+{
+    int sweeps = 0, quiet = 0, solves = 0, quietNeeded = quietSweeps;
+    while (sweeps < maxSweeps_)
+    {
+        const auto [change, size, changes] = sweepOnce();
+        ++sweeps;
+        bool settled = changes == 0 && change <= tolerance_*tolerance_*size;
+        quiet = changes == 0 ? quiet + 1 : 0;
+        if (!settled && quiet >= quietNeeded)
+        {
+            // The states have stopped changing while the forces converge
+            // slowly (contacts that share a load nearly alike): solved
+            // directly, with the states each solution's law gives, until
+            // they hold. Where they do not, Gauss-Seidel goes on, longer
+            // each time before the next try
+            settled = activeSet(solves);
+            quiet = 0;
+            quietNeeded *= 2;
+        }
+        if (!settled) continue;
+        const long broken = contacts().breakOverloadedBonds();
+        if (broken == 0)
+        {
+            report.factorUpdates += solves;
+            return {sweeps, true};
+        }
+        report.bondsBroken += broken;
+        quietNeeded = quietSweeps;
+        if (log)
+        {
+            *log << "    Gauss-Seidel: " << broken << " bonds broken after "
+                << sweeps << " sweeps\n";
+        }
+    }
+    report.factorUpdates += solves;
+    return {sweeps, false};
+}
+
+
+std::string contactGaussSeidel::cutReason(bool settled, const stepReport& report) const
+{
+    if (byPenalty_ || settled) return penaltyOpenClose::cutReason(settled, report);
+    return "the Gauss-Seidel sweeps did not settle in " + std::to_string(maxSweeps_)
+        + " sweeps";
+}
+
+
+Eigen::VectorXd contactGaussSeidel::increment(const Eigen::VectorXd& ddFree) const
+{
+    Eigen::VectorXd dd = ddFree;
+    for (const bodyBlock& bb : blocks_)
+    {
+        const Eigen::VectorXd db = bb.Z*bb.lambda;
+        const std::vector<int>& dofs = bodies_.dofs(std::size_t(bb.body));
+        for (std::size_t i = 0; i < dofs.size(); ++i) dd[dofs[i]] += db[long(i)];
+    }
+    return dd;
+}
+
+} // End namespace nmm

@@ -1,0 +1,199 @@
+#include "nmmSolid/solver/bodySystems/bodySystems.H"
+
+#include "nmmSolid/solver/linearSolver/singularSystem/singularSystem.H"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+namespace nmm
+{
+
+namespace
+{
+
+//- The root of i's set, halving the path on the way
+int findRoot(std::vector<int>& parent, int i)
+{
+    while (parent[std::size_t(i)] != i)
+    {
+        parent[std::size_t(i)] = parent[std::size_t(parent[std::size_t(i)])];
+        i = parent[std::size_t(i)];
+    }
+    return i;
+}
+
+//- The pivots (L's diagonal) of a Cholesky factorisation against the
+//  diagonal of the matrix, in the same order: a pivot^2 below
+//  pivotTolerance of its diagonal is rounding of a zero (a singular
+//  body's last pivot comes out as a tiny number of either sign)
+bool pivotsHold(const Eigen::VectorXd& L, const Eigen::VectorXd& diagonal)
+{
+    constexpr double pivotTolerance = 1e-12;
+    for (long k = 0; k < L.size(); ++k)
+    {
+        if (!(L[k]*L[k] > pivotTolerance*std::abs(diagonal[k]))) return false;
+    }
+    return true;
+}
+
+} // End anonymous namespace
+
+
+bool bodySystems::samePattern(const sparseMatrix& K) const
+{
+    return K.rows() == long(bodyOf_.size())
+        && std::equal(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1,
+                      kOuter_.begin(), kOuter_.end())
+        && std::equal(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros(),
+                      kInner_.begin(), kInner_.end());
+}
+
+
+void bodySystems::split(const sparseMatrix& K)
+{
+    const int n = int(K.rows());
+    std::vector<int> parent(static_cast<std::size_t>(n));
+    std::iota(parent.begin(), parent.end(), 0);
+    for (int j = 0; j < K.outerSize(); ++j)
+    {
+        for (sparseMatrix::InnerIterator it(K, j); it; ++it)
+        {
+            const int a = findRoot(parent, int(it.row()));
+            const int b = findRoot(parent, j);
+            if (a != b) parent[std::size_t(std::max(a, b))] = std::min(a, b);
+        }
+    }
+    // Bodies numbered by their first unknown: the order does not depend
+    // on how the sets were merged
+    bodies_.clear();
+    bodyOf_.assign(std::size_t(n), -1);
+    localOf_.assign(std::size_t(n), -1);
+    std::vector<int> bodyOfRoot(std::size_t(n), -1);
+    for (int i = 0; i < n; ++i)
+    {
+        const int r = findRoot(parent, i);
+        if (bodyOfRoot[std::size_t(r)] < 0)
+        {
+            bodyOfRoot[std::size_t(r)] = int(bodies_.size());
+            bodies_.emplace_back();
+        }
+        body& b = bodies_[std::size_t(bodyOfRoot[std::size_t(r)])];
+        bodyOf_[std::size_t(i)] = bodyOfRoot[std::size_t(r)];
+        localOf_[std::size_t(i)] = int(b.dofs.size());
+        b.dofs.push_back(i);
+    }
+    kOuter_.assign(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1);
+    kInner_.assign(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros());
+}
+
+
+bodySystems::sparseMatrix bodySystems::bodyMatrix(const body& b, const sparseMatrix& K) const
+{
+    // K is column major with sorted rows: the body's columns, renumbered
+    const int m = int(b.dofs.size());
+    sparseMatrix Kb(m, m);
+    std::vector<Eigen::Triplet<double>> t;
+    for (int c = 0; c < m; ++c)
+    {
+        for (sparseMatrix::InnerIterator it(K, b.dofs[std::size_t(c)]); it; ++it)
+        {
+            t.emplace_back(localOf_[std::size_t(it.row())], c, it.value());
+        }
+    }
+    Kb.setFromTriplets(t.begin(), t.end());
+    return Kb;
+}
+
+
+bool bodySystems::factoriseBody(body& b, const sparseMatrix& K) const
+{
+    const int m = int(b.dofs.size());
+    if (!b.isSparse())
+    {
+        Eigen::MatrixXd Kb = Eigen::MatrixXd::Zero(m, m);
+        for (int c = 0; c < m; ++c)
+        {
+            for (sparseMatrix::InnerIterator it(K, b.dofs[std::size_t(c)]); it; ++it)
+            {
+                Kb(localOf_[std::size_t(it.row())], c) = it.value();
+            }
+        }
+        b.dense.compute(Kb);
+        return b.dense.info() == Eigen::Success
+            && pivotsHold(b.dense.matrixLLT().diagonal(), Kb.diagonal());
+    }
+    const sparseMatrix Kb = bodyMatrix(b, K);
+    const bool same = b.sparse
+        && std::equal(Kb.outerIndexPtr(), Kb.outerIndexPtr() + Kb.outerSize() + 1,
+                      b.outer.begin(), b.outer.end())
+        && std::equal(Kb.innerIndexPtr(), Kb.innerIndexPtr() + Kb.nonZeros(),
+                      b.inner.begin(), b.inner.end());
+    if (!same)
+    {
+        b.sparse = std::make_unique<Eigen::SimplicialLLT<sparseMatrix>>();
+        b.sparse->analyzePattern(Kb);
+        b.outer.assign(Kb.outerIndexPtr(), Kb.outerIndexPtr() + Kb.outerSize() + 1);
+        b.inner.assign(Kb.innerIndexPtr(), Kb.innerIndexPtr() + Kb.nonZeros());
+    }
+    b.sparse->factorize(Kb);
+    return b.sparse->info() == Eigen::Success
+        && pivotsHold
+           (
+               Eigen::VectorXd(b.sparse->matrixL().nestedExpression().diagonal()),
+               b.sparse->permutationP()*Eigen::VectorXd(Kb.diagonal())
+           );
+}
+
+
+void bodySystems::factorise(const sparseMatrix& K)
+{
+    if (!samePattern(K)) split(K);
+    const long nBodies = long(bodies_.size());
+    std::vector<char> failed(bodies_.size(), 0);
+    #pragma omp parallel for schedule(dynamic)
+    for (long b = 0; b < nBodies; ++b)
+    {
+        failed[std::size_t(b)] = !factoriseBody(bodies_[std::size_t(b)], K);
+    }
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+    {
+        if (failed[b])
+        {
+            throw singularSystem
+            (
+                "the matrix of the body of unknowns " + std::to_string(bodies_[b].dofs.front())
+                + " to " + std::to_string(bodies_[b].dofs.back()) + " is not positive definite",
+                bodies_[b].dofs.front(), false
+            );
+        }
+    }
+}
+
+
+Eigen::MatrixXd bodySystems::solveBody(std::size_t b, const Eigen::MatrixXd& F) const
+{
+    const body& bd = bodies_[b];
+    if (bd.isSparse()) return bd.sparse->solve(F);
+    return bd.dense.solve(F);
+}
+
+
+Eigen::VectorXd bodySystems::solve(const Eigen::VectorXd& f) const
+{
+    Eigen::VectorXd x(f.size());
+    const long nBodies = long(bodies_.size());
+    #pragma omp parallel for schedule(dynamic)
+    for (long b = 0; b < nBodies; ++b)
+    {
+        const body& bd = bodies_[std::size_t(b)];
+        Eigen::VectorXd fb(long(bd.dofs.size()));
+        for (std::size_t i = 0; i < bd.dofs.size(); ++i) fb[long(i)] = f[bd.dofs[i]];
+        const Eigen::VectorXd xb = solveBody(std::size_t(b), fb);
+        for (std::size_t i = 0; i < bd.dofs.size(); ++i) x[bd.dofs[i]] = xb[long(i)];
+    }
+    return x;
+}
+
+} // End namespace nmm

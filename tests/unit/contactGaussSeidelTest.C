@@ -1,0 +1,178 @@
+// The contact-space method (contact { method gaussSeidel; }) against the
+// penalty method's open-close iteration, which solves the same springs
+// and law with a factorisation of the whole system: the same steps to the
+// tolerance of the sweeps; a block pushed past its friction slides at its
+// friction force; a static step is the penalty method's; its keywords.
+#include "nmmSolid/contact/contactSolver/contactGaussSeidel/contactGaussSeidel.H"
+#include "nmmSolid/io/dictionary/IOerror.H"
+#include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
+
+#include "modelCase.H"
+#include "testTools.H"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+namespace nm = nmm;
+using nmm::test::header;
+using testCase = nmm::test::modelCase;
+using testing::HasSubstr;
+
+namespace
+{
+
+constexpr double rho = 2000, g = 9.81;
+
+//- Two 1 x 1 blocks stacked on a 4 x 1 base fixed at its bottom, the
+//  lower one pushed on its left side by a traction of resultant push
+//  [N/m] and no moment about the base (8 cos t (4 - 6 y) in Potra's
+//  stick-slip case), so that the push slides the blocks and does not
+//  tip them; a stiff material (E 1e9) under gravity, with the given
+//  analysis and contact method
+std::unique_ptr<testCase> stack
+(
+    const std::string& method,
+    const std::string& analysis,
+    double push = 0
+)
+{
+    auto c = std::make_unique<testCase>
+    (
+        "base { material rock; polygon ((0 -1) (4 -1) (4 0) (0 0)); }"
+        "lower { material rock; polygon ((1 0) (2 0) (2 1) (1 1)); }"
+        "upper { material rock; polygon ((1.2 1) (2.2 1) (2.2 2) (1.2 2)); }",
+        "fixed { type box; min (-1 -1.001); max (5 -0.999); }"
+        "push { type box; min (0.999 -1e-6); max (1.001 1.000001); }",
+        "type structured; cellSize 0.25;",
+        analysis + "contact { method " + method + "; }\n",
+        "fixed { type fixedValue; value uniform (0 0 0); }"
+        "push { type tractionDisplacement; traction expression \"vector("
+            + std::to_string(push) + "*(4 - 6*y), 0, 0)\"; pressure uniform 0; }",
+        "(0 -9.81 0)"
+    );
+    c->dir.write("constant/mechanicalProperties", std::string(header)
+        + "planeStress no; thickness 1;\n"
+          "materials { rock { type linearElastic; E 1e9; nu 0.25; rho 2000; } }\n");
+    return c;
+}
+
+const std::string quasiStatic =
+    "analysis dynamic; timeScheme { type DDA; velocityRatio 0; }\n";
+
+} // End anonymous namespace
+
+
+TEST(contactGaussSeidel, theStepsOfThePenaltyMethod)
+{
+    const auto penalty = stack("penalty", quasiStatic);
+    const auto contactSpace = stack("gaussSeidel", quasiStatic);
+    auto a = penalty->model();
+    auto b = contactSpace->model();
+    for (int step = 0; step < 5; ++step)
+    {
+        const auto ra = a->solveStep(2e-3);
+        const auto rb = b->solveStep(2e-3);
+        ASSERT_TRUE(ra.converged) << ra.cutReason;
+        ASSERT_TRUE(rb.converged) << rb.cutReason;
+        a->acceptStep();
+        b->acceptStep();
+        EXPECT_EQ(ra.contacts, rb.contacts) << "step " << step;
+        const Eigen::VectorXd& Da = a->state().D;
+        const Eigen::VectorXd& Db = b->state().D;
+        // The sweeps settle to 1e-6 of the forces
+        EXPECT_LT((Da - Db).norm(), 1e-5*Da.norm()) << "step " << step;
+        ASSERT_EQ(a->state().contacts.size(), b->state().contacts.size());
+        double largest = 0, difference = 0;
+        for (std::size_t i = 0; i < a->state().contacts.size(); ++i)
+        {
+            const auto& ca = a->state().contacts[i];
+            const auto& cb = b->state().contacts[i];
+            EXPECT_EQ(ca.state, cb.state) << "contact " << i;
+            largest = std::max(largest, std::abs(ca.normalForce));
+            difference = std::max(difference, std::abs(ca.normalForce - cb.normalForce));
+        }
+        EXPECT_LT(difference, 1e-4*largest) << "step " << step;
+    }
+}
+
+
+TEST(contactGaussSeidel, aPushedBlockSlidesAtItsFrictionForce)
+{
+    // 30 degrees of friction under both blocks' weight (2 x 2000 x 9.81 N
+    // on the base), from the initial equilibrium, pushed by 1.5 times the
+    // friction force: the lower block slides on the base, each of its
+    // contacts at its friction force, and the base carries the weight
+    const double weight = 2*rho*g, mu = std::tan(M_PI/6);
+    const auto c = stack("gaussSeidel",
+        "analysis dynamic; timeScheme { type DDA; velocityRatio 1; }\n"
+        "initialEquilibrium yes;\n",
+        1.5*mu*weight);
+    auto m = c->model();
+    m->solveInitialEquilibrium();
+    for (int step = 0; step < 10; ++step)
+    {
+        const auto r = m->solveStep(1e-3);
+        ASSERT_TRUE(r.converged) << r.cutReason;
+        m->acceptStep();
+    }
+    double normal = 0;
+    int sliding = 0;
+    for (const auto& k : m->state().contacts)
+    {
+        // The contacts between the base and the lower block
+        if (std::abs(k.point.y()) > 0.01 || !nm::isClosed(k.state)) continue;
+        EXPECT_EQ(k.state, nm::contactState::sliding);
+        if (k.state != nm::contactState::sliding) continue;
+        ++sliding;
+        normal += k.normalForce;
+        EXPECT_NEAR(std::abs(k.shearForce), mu*k.normalForce, 1e-9*mu*weight);
+    }
+    EXPECT_GT(sliding, 1);
+    EXPECT_NEAR(normal, weight, 1e-2*weight);
+}
+
+
+TEST(contactGaussSeidel, aStaticStepIsThePenaltyMethods)
+{
+    // Without mass the blocks resting on the base have no regular matrix
+    // of their own: the step is the penalty method's, and says so once
+    const std::string statics = "analysis static;\n";
+    const auto c = stack("gaussSeidel", statics);
+    const auto p = stack("penalty", statics);
+    auto m = c->model();
+    auto reference = p->model();
+    std::ostringstream log;
+    m->setLog(log);
+    const auto r = m->solveStep(1);
+    ASSERT_TRUE(r.converged) << r.cutReason;
+    ASSERT_TRUE(reference->solveStep(1).converged);
+    m->acceptStep();
+    reference->acceptStep();
+    EXPECT_THAT(log.str(), HasSubstr("solved by the penalty method"));
+    EXPECT_EQ(m->state().D, reference->state().D);
+}
+
+
+TEST(contactGaussSeidel, keywords)
+{
+    const auto read = [](const std::string& text)
+    {
+        nm::test::tempDir dir;
+        dir.write("contact", std::string(header) + text);
+        return nm::contactSolver::New(nm::dictionary::read(dir.path/"contact"));
+    };
+    EXPECT_NO_THROW(read("method gaussSeidel; tolerance 1e-8; maxSweeps 50;"));
+    try
+    {
+        read("method gaussSeidel; tolerence 1e-8;");
+        FAIL() << "an unknown keyword was accepted";
+    }
+    catch (const nm::IOerror& e)
+    {
+        EXPECT_THAT(e.what(), HasSubstr("did you mean 'tolerance'"));
+    }
+    EXPECT_THROW(read("method gaussSeidel; tolerance 0;"), nm::IOerror);
+    EXPECT_THROW(read("method gaussSeidel; maxSweeps 0;"), nm::IOerror);
+}
