@@ -1,6 +1,6 @@
 """What the benchmark drivers that run a case share: running an
 application in a case as its Allrun would (log.<application>), reading
-a function object's table, and the solver log's CPU split.
+a function object's table, and the solver log's time split.
 
 Only the standard library is used.
 
@@ -34,10 +34,11 @@ def table(path):
 
 
 def cpuSplit(solverLog):
-    """The solver log's "Timing (CPU s):" line as {part: seconds}"""
+    """The solver log's "Timing (wall s):" line as {part: seconds} (the
+    parts' wall-clock time; logs of earlier builds say "CPU s")"""
     return dict((k.strip(), float(v)) for k, v in re.findall(
         r"([a-z][a-z ]*?)\s+([0-9.eE+-]+)",
-        re.search(r"Timing \(CPU s\):(.*)", solverLog).group(1)))
+        re.search(r"Timing \((?:CPU|wall) s\):(.*)", solverLog).group(1)))
 
 
 def linearAlgebra(solverLog):

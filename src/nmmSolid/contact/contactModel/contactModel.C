@@ -209,10 +209,15 @@ void contactModel::beginStep
 {
     boundaries_.move(space_.cover(), space_.elements(), patchD);
     const auto& loops = boundaries_.loops();
-    active_.clear();
-    for (const contactCandidate& c : search_.find(loops))
+    const std::vector<contactCandidate> found = search_.find(loops);
+    active_.assign(found.size(), active{});
+    // Each contact's terms and springs on its own: on OpenMP's threads
+    const long nFound = long(found.size());
+    #pragma omp parallel for schedule(dynamic, 64)
+    for (long k = 0; k < nFound; ++k)
     {
-        active a;
+        const contactCandidate& c = found[std::size_t(k)];
+        active& a = active_[std::size_t(k)];
         a.record.vertexLoop = c.vertexLoop;
         a.record.vertex = c.vertex;
         a.record.edgeLoop = c.edgeLoop;
@@ -233,7 +238,6 @@ void contactModel::beginStep
         a.h = relativeTerms(c, s);
         const auto p = pressure_.find(a.record.key());
         if (p != pressure_.end()) a.pressureForce = p->second*c.length*thickness_;
-        active_.push_back(std::move(a));
     }
     carryHistory(history, start);
 }
@@ -249,8 +253,12 @@ void contactModel::carryHistory(const std::vector<contactRecord>& history, bool 
     }
     const auto& loops = boundaries_.loops();
 
-    for (active& a : active_)
+    // Each contact's history on its own: on OpenMP's threads
+    const long nActive = long(active_.size());
+    #pragma omp parallel for schedule(dynamic, 64)
+    for (long k = 0; k < nActive; ++k)
     {
+        active& a = active_[std::size_t(k)];
         contactRecord& r = a.record;
         const contactRecord* old = nullptr;
         const auto range = byVertex.equal_range({r.vertexLoop, r.vertex, r.edgeLoop});

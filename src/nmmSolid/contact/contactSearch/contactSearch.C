@@ -86,6 +86,13 @@ public:
         return f;
     }
 
+    //- Work out the flags of every vertex of loop l now, so that the
+    //  pair searches of several threads only read them
+    void workOut(std::size_t l)
+    {
+        for (int v = 0; v < int(loops_[l].vertices.size()); ++v) (*this)(int(l), v);
+    }
+
     //- The boundary turns by less than the tolerance at the vertex
     bool flat(int loop, int v) const
     {
@@ -852,7 +859,6 @@ std::vector<contactCandidate> contactSearch::find
 {
     const auto pairs = loopPairs(loops);
     reflexFlags reflex(loops, angleTolerance_);
-    pairBuffers buffers;
 
     // The boxes of the loops in pairs, each once
     std::vector<boxSearch::box> boxes(loops.size());
@@ -867,15 +873,34 @@ std::vector<contactCandidate> contactSearch::find
         }
     }
 
-    std::vector<contactCandidate> all;
-    all.reserve(8*pairs.size());
-    for (const auto& [a, b] : pairs)
+    for (std::size_t l = 0; l < loops.size(); ++l)
     {
-        pairSearch
-        (
-            loops, distance_, angleTolerance_, int(a), int(b), reflex, buffers
-        ).run(boxes[a], boxes[b], all);
+        if (boxed[l]) reflex.workOut(l);
     }
+
+    // The pairs are independent: searched on OpenMP's threads, each with
+    // its own buffers, their candidates joined in the pairs' order (the
+    // same list whatever the threads)
+    std::vector<std::vector<contactCandidate>> found(pairs.size());
+    const long nPairs = long(pairs.size());
+    #pragma omp parallel
+    {
+        pairBuffers buffers;
+        #pragma omp for schedule(dynamic, 16)
+        for (long k = 0; k < nPairs; ++k)
+        {
+            const auto& [a, b] = pairs[std::size_t(k)];
+            pairSearch
+            (
+                loops, distance_, angleTolerance_, int(a), int(b), reflex, buffers
+            ).run(boxes[a], boxes[b], found[std::size_t(k)]);
+        }
+    }
+    std::size_t total = 0;
+    for (const auto& f : found) total += f.size();
+    std::vector<contactCandidate> all;
+    all.reserve(total);
+    for (auto& f : found) all.insert(all.end(), f.begin(), f.end());
     return tidy(loops, std::move(all), reflex);
 }
 

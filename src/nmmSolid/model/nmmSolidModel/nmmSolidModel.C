@@ -1,6 +1,6 @@
 #include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
 
-#include "nmmSolid/global/clock/cpuTime.H"
+#include "nmmSolid/global/clock/clockTime.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/dictionary/IOerror.H"
 #include "nmmSolid/solver/timeScheme/staticScheme/staticScheme.H"
@@ -89,7 +89,7 @@ nmmSolidModel::nmmSolidModel(parts p)
     );
     if (parts_.scheme->dynamic())
     {
-        const cpuTime clock;
+        const clockTime clock;
         assembler_->buildMass();
         timing_["mass matrix"] += clock.elapsed();
     }
@@ -147,12 +147,12 @@ stepReport nmmSolidModel::solveStep(double dt)
     if (parts_.scheme->dynamic() && parts_.scheme->accelerationFactor() != 0
      && state_.timeIndex == 0 && state_.A.isZero() && !startsInEquilibrium_)
     {
-        const cpuTime clock;
+        const clockTime clock;
         initialiseAcceleration();
         timing_["mass matrix"] += clock.elapsed();
     }
 
-    const cpuTime clock;
+    const clockTime clock;
     assembler_->setTemperatureIncrement(elementTemperatureIncrement());
     const auto sys = assembler_->assemble(state_, dt, *parts_.scheme);
     timing_["assembly"] += clock.elapsed();
@@ -188,7 +188,7 @@ void nmmSolidModel::solveInitialEquilibrium()
     const std::vector<double> next = std::exchange(temperature_, {});
     const staticScheme statics;
     solvingEquilibrium_ = true;
-    const cpuTime clock;
+    const clockTime clock;
     assembler_->setTemperatureIncrement({});
     const auto sys = assembler_->assemble(state_, 0, statics);
     timing_["assembly"] += clock.elapsed();
@@ -267,7 +267,7 @@ void nmmSolidModel::reportEquilibrium(const stepReport& r) const
 
 void nmmSolidModel::factoriseSystem(const Eigen::SparseMatrix<double>& K, double dt)
 {
-    cpuTime clock;
+    clockTime clock;
     try
     {
         parts_.solver->factorise(K);
@@ -330,7 +330,7 @@ void nmmSolidModel::factoriseSystem(const Eigen::SparseMatrix<double>& K, double
 
 Eigen::VectorXd nmmSolidModel::solveFactorised(const Eigen::VectorXd& f, double dt)
 {
-    const cpuTime clock;
+    const clockTime clock;
     Eigen::VectorXd dd = parts_.solver->solve(f);
     timing_["solution"] += clock.elapsed();
     if (!dd.allFinite())
@@ -365,7 +365,7 @@ bool nmmSolidModel::solveWithContacts
     };
     services.solveColumns = [this](const Eigen::MatrixXd& F)
     {
-        const cpuTime clock;
+        const clockTime clock;
         Eigen::MatrixXd X = parts_.solver->solveColumns(F);
         timing_["solution"] += clock.elapsed();
         return X;
@@ -459,7 +459,7 @@ void nmmSolidModel::updateTrial
     const timeScheme& scheme
 )
 {
-    const cpuTime clock;
+    const clockTime clock;
     trial_ = state_;
     trial_.time = state_.time + dt;
     ++trial_.timeIndex;
@@ -601,7 +601,7 @@ std::vector<double> nmmSolidModel::blockAreas() const
 
 void nmmSolidModel::printTiming(std::ostream& os) const
 {
-    os << "Timing (CPU s):";
+    os << "Timing (wall s):";
     for (const auto& [part, seconds] : timing_)
     {
         os << "  " << part << ' ' << std::setprecision(3) << seconds;

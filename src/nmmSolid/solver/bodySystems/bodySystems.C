@@ -38,6 +38,36 @@ bool pivotsHold(const Eigen::VectorXd& L, const Eigen::VectorXd& diagonal)
     return true;
 }
 
+//- X of L L^T X = F for a sparse lower factor L (compressed columns,
+//  the diagonal first in each): both triangular solves in one pass over
+//  L each, every column of F at once
+Eigen::MatrixXd solveBlock(const Eigen::SparseMatrix<double>& L, const Eigen::MatrixXd& F)
+{
+    using rowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    rowMajor X = F;
+    const int* outer = L.outerIndexPtr();
+    const int* inner = L.innerIndexPtr();
+    const double* value = L.valuePtr();
+    const long n = L.cols();
+    for (long j = 0; j < n; ++j)
+    {
+        X.row(j) /= value[outer[j]];
+        for (int p = outer[j] + 1; p < outer[j + 1]; ++p)
+        {
+            X.row(inner[p]) -= value[p]*X.row(j);
+        }
+    }
+    for (long j = n - 1; j >= 0; --j)
+    {
+        for (int p = outer[j] + 1; p < outer[j + 1]; ++p)
+        {
+            X.row(j) -= value[p]*X.row(inner[p]);
+        }
+        X.row(j) /= value[outer[j]];
+    }
+    return X;
+}
+
 } // End anonymous namespace
 
 
@@ -175,7 +205,12 @@ void bodySystems::factorise(const sparseMatrix& K)
 Eigen::MatrixXd bodySystems::solveBody(std::size_t b, const Eigen::MatrixXd& F) const
 {
     const body& bd = bodies_[b];
-    if (bd.isSparse()) return bd.sparse->solve(F);
+    if (bd.isSparse())
+    {
+        const auto& P = bd.sparse->permutationP();
+        const auto& L = bd.sparse->matrixL().nestedExpression();
+        return bd.sparse->permutationPinv()*solveBlock(L, P*F);
+    }
     return bd.dense.solve(F);
 }
 

@@ -1,6 +1,6 @@
 #include "nmmSolid/contact/contactSolver/contactGaussSeidel/contactGaussSeidel.H"
 
-#include "nmmSolid/global/clock/cpuTime.H"
+#include "nmmSolid/global/clock/clockTime.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/solver/linearSolver/singularSystem/singularSystem.H"
 
@@ -30,7 +30,7 @@ constexpr int maxActiveSetSolves = 8;
 constexpr int denseContactRows = 40;
 
 
-void addTime(const contactSolver::services& s, const char* part, const cpuTime& clock)
+void addTime(const contactSolver::services& s, const char* part, const clockTime& clock)
 {
     if (s.timing) (*s.timing)[part] += clock.elapsed();
 }
@@ -86,7 +86,7 @@ bool contactGaussSeidel::solve
     Eigen::VectorXd& dd
 )
 {
-    cpuTime clock;
+    clockTime clock;
     try
     {
         bodies_.factorise(sys.K);
@@ -110,11 +110,11 @@ bool contactGaussSeidel::solve
     addTime(srv, "body factorisation", clock);
     ++report.factorisations;
 
-    clock = cpuTime();
+    clock = clockTime();
     contacts().beginStep(patchD0, history, atStart);
     addTime(srv, "contact detection", clock);
 
-    clock = cpuTime();
+    clock = clockTime();
     const long n = long(sys.f.size());
     const Eigen::VectorXd ddFree = bodies_.solve(sys.f + contacts().pressureLoads(n));
     addTime(srv, "solution", clock);
@@ -134,10 +134,10 @@ bool contactGaussSeidel::solve
     bool settled = false;
     for (long joined = 1; joined > 0;)
     {
-        clock = cpuTime();
+        clock = clockTime();
         buildContactSpace();
         addTime(srv, "contact operator", clock);
-        clock = cpuTime();
+        clock = clockTime();
         const auto [n, ok] = sweep(report, srv.log);
         sweeps += n;
         settled = ok;
@@ -213,35 +213,10 @@ void contactGaussSeidel::buildContactSpace()
         }
     }
 
-    // Z = K_b^-1 G_b^T and W_b = G_b Z, body by body
+    // Z = K_b^-1 G_b^T and W_b = G_b Z, body by body, on OpenMP's threads
     const long nBlocks = long(blocks_.size());
-    #pragma omp parallel for schedule(dynamic)
-    for (long k = 0; k < nBlocks; ++k)
-    {
-        bodyBlock& bb = blocks_[std::size_t(k)];
-        const long nb = long(bodies_.dofs(std::size_t(bb.body)).size());
-        const long R = 2*long(bb.contacts.size());
-        std::vector<Eigen::Triplet<double>> t;
-        for (long r = 0; r < R; ++r)
-        {
-            const std::size_t spring = 2*std::size_t(bb.contacts[std::size_t(r/2)]) + std::size_t(r%2);
-            for (const auto& [dof, coefficient] : c.springTerms(spring))
-            {
-                if (bodies_.bodyOf(dof) == bb.body) t.emplace_back(bodies_.localOf(dof), r, coefficient);
-            }
-        }
-        // G_b^T is sparse (a contact row has the unknowns of two elements):
-        // W_b = G_b Z costs its nonzeros times the rows, not the body's size
-        Eigen::SparseMatrix<double> Gt(nb, R);
-        Gt.setFromTriplets(t.begin(), t.end());
-        bb.Z = bodies_.solveBody(std::size_t(bb.body), Eigen::MatrixXd(Gt));
-        bb.W = Gt.transpose()*bb.Z;
-        bb.lambda.resize(R);
-        for (long r = 0; r < R; r += 2)
-        {
-            bb.lambda.segment<2>(r) = c.startForces(std::size_t(bb.contacts[std::size_t(r/2)]));
-        }
-    }
+    #pragma omp parallel for schedule(dynamic, 4)
+    for (long k = 0; k < nBlocks; ++k) buildBlock(blocks_[std::size_t(k)]);
 
     Wii_.assign(nc, Eigen::Matrix2d::Zero());
     for (std::size_t i = 0; i < nc; ++i)
@@ -482,6 +457,34 @@ std::pair<int, bool> contactGaussSeidel::sweep(stepReport& report, std::ostream*
     }
     report.factorUpdates += solves;
     return {sweeps, false};
+}
+
+
+void contactGaussSeidel::buildBlock(bodyBlock& bb) const
+{
+    const contactModel& c = contacts();
+    const long nb = long(bodies_.dofs(std::size_t(bb.body)).size());
+    const long R = 2*long(bb.contacts.size());
+    std::vector<Eigen::Triplet<double>> t;
+    for (long r = 0; r < R; ++r)
+    {
+        const std::size_t spring = 2*std::size_t(bb.contacts[std::size_t(r/2)]) + std::size_t(r%2);
+        for (const auto& [dof, coefficient] : c.springTerms(spring))
+        {
+            if (bodies_.bodyOf(dof) == bb.body) t.emplace_back(bodies_.localOf(dof), r, coefficient);
+        }
+    }
+    // G_b^T is sparse (a contact row has the unknowns of two elements):
+    // W_b = G_b Z costs its nonzeros times the rows, not the body's size
+    Eigen::SparseMatrix<double> Gt(nb, R);
+    Gt.setFromTriplets(t.begin(), t.end());
+    bb.Z = bodies_.solveBody(std::size_t(bb.body), Eigen::MatrixXd(Gt));
+    bb.W = Gt.transpose()*bb.Z;
+    bb.lambda.resize(R);
+    for (long r = 0; r < R; r += 2)
+    {
+        bb.lambda.segment<2>(r) = c.startForces(std::size_t(bb.contacts[std::size_t(r/2)]));
+    }
 }
 
 

@@ -1,6 +1,6 @@
 #include "nmmSolid/contact/contactSolver/penaltyOpenClose/penaltyOpenClose.H"
 
-#include "nmmSolid/global/clock/cpuTime.H"
+#include "nmmSolid/global/clock/clockTime.H"
 #include "nmmSolid/space/manifoldSpace/manifoldSpace.H"
 
 #include <limits>
@@ -27,7 +27,7 @@ constexpr double searchOverStep = 2.5;
 constexpr double penetrationOverSearch = 0.4;
 
 
-void addTime(const contactSolver::services& s, const char* part, const cpuTime& clock)
+void addTime(const contactSolver::services& s, const char* part, const clockTime& clock)
 {
     if (s.timing) (*s.timing)[part] += clock.elapsed();
 }
@@ -146,11 +146,11 @@ void penaltyOpenClose::beginStep
     const services& srv
 )
 {
-    cpuTime clock;
+    clockTime clock;
     contacts_->beginStep(patchD0, history, atStart);
     addTime(srv, "contact detection", clock);
     loads_ = sys.f + contacts_->pressureLoads(sys.f.size());
-    clock = cpuTime();
+    clock = clockTime();
     pattern_ = contacts_->withPattern(sys.K);
     addTime(srv, "contact pattern", clock);
     factorised_ = false;
@@ -173,14 +173,14 @@ bool penaltyOpenClose::openClose
     bool damped = false;
     for (int it = 1; it <= given_.maxOpenCloseIterations && !settled; ++it)
     {
-        cpuTime clock;
+        clockTime clock;
         const std::vector<double> k = contacts_->springStiffnesses();
         const Eigen::VectorXd f = loads_ + contacts_->forces(n);
         addTime(srv, "contact assembly", clock);
 
         const Eigen::VectorXd delta = solveWithStates(k, f, dd, srv, report);
 
-        clock = cpuTime();
+        clock = clockTime();
         double alpha = 1;
         if (damped)
         {
@@ -261,7 +261,7 @@ Eigen::VectorXd penaltyOpenClose::solveWithStates
     {
         // Its solves with the factor count as solution, not twice
         const double solved = srv.timing ? (*srv.timing)["solution"] : 0.0;
-        const cpuTime clock;
+        const clockTime clock;
         Eigen::VectorXd x;
         const bool ok = update_.solve(k, -update_.residual(k, dd, f), srv.solveColumns, x);
         if (srv.timing)
@@ -299,7 +299,7 @@ bool penaltyOpenClose::updateIsCheaper(const std::vector<double>& k) const
 
 void penaltyOpenClose::refactorise(const std::vector<double>& k, const services& srv)
 {
-    cpuTime clock;
+    clockTime clock;
     K1_ = pattern_;
     contacts_->addSprings(K1_);
     addTime(srv, "contact assembly", clock);
