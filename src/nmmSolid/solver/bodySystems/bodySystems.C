@@ -38,13 +38,12 @@ bool pivotsHold(const Eigen::VectorXd& L, const Eigen::VectorXd& diagonal)
     return true;
 }
 
-//- X of L L^T X = F for a sparse lower factor L (compressed columns,
-//  the diagonal first in each): both triangular solves in one pass over
-//  L each, every column of F at once
-Eigen::MatrixXd solveBlock(const Eigen::SparseMatrix<double>& L, const Eigen::MatrixXd& F)
+//- X of L L^T X = F in place for a sparse lower factor L (compressed
+//  columns, the diagonal first in each): both triangular solves in one
+//  pass over L each, every column of the row-major X at once
+template<class Matrix>
+void solveBlock(const Eigen::SparseMatrix<double>& L, Matrix& X)
 {
-    using rowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-    rowMajor X = F;
     const int* outer = L.outerIndexPtr();
     const int* inner = L.innerIndexPtr();
     const double* value = L.valuePtr();
@@ -65,7 +64,6 @@ Eigen::MatrixXd solveBlock(const Eigen::SparseMatrix<double>& L, const Eigen::Ma
         }
         X.row(j) /= value[outer[j]];
     }
-    return X;
 }
 
 } // End anonymous namespace
@@ -150,6 +148,11 @@ bool bodySystems::factoriseBody(body& b, const sparseMatrix& K) const
                 Kb(localOf_[std::size_t(it.row())], c) = it.value();
             }
         }
+        if (b.rowOrder.size() != std::size_t(m))
+        {
+            b.rowOrder.resize(std::size_t(m));
+            std::iota(b.rowOrder.begin(), b.rowOrder.end(), 0);
+        }
         b.dense.compute(Kb);
         return b.dense.info() == Eigen::Success
             && pivotsHold(b.dense.matrixLLT().diagonal(), Kb.diagonal());
@@ -164,6 +167,8 @@ bool bodySystems::factoriseBody(body& b, const sparseMatrix& K) const
     {
         b.sparse = std::make_unique<Eigen::SimplicialLLT<sparseMatrix>>();
         b.sparse->analyzePattern(Kb);
+        const auto& P = b.sparse->permutationP().indices();
+        b.rowOrder.assign(P.data(), P.data() + P.size());
         b.outer.assign(Kb.outerIndexPtr(), Kb.outerIndexPtr() + Kb.outerSize() + 1);
         b.inner.assign(Kb.innerIndexPtr(), Kb.innerIndexPtr() + Kb.nonZeros());
     }
@@ -207,11 +212,19 @@ Eigen::MatrixXd bodySystems::solveBody(std::size_t b, const Eigen::MatrixXd& F) 
     const body& bd = bodies_[b];
     if (bd.isSparse())
     {
-        const auto& P = bd.sparse->permutationP();
-        const auto& L = bd.sparse->matrixL().nestedExpression();
-        return bd.sparse->permutationPinv()*solveBlock(L, P*F);
+        bodySystems::rowMajorMatrix X = bd.sparse->permutationP()*F;
+        solveBlock(bd.sparse->matrixL().nestedExpression(), X);
+        return bd.sparse->permutationPinv()*X;
     }
     return bd.dense.solve(F);
+}
+
+
+void bodySystems::solveInPlace(std::size_t b, Eigen::Map<rowMajorMatrix> X) const
+{
+    const body& bd = bodies_[b];
+    if (bd.isSparse()) solveBlock(bd.sparse->matrixL().nestedExpression(), X);
+    else bd.dense.solveInPlace(X);
 }
 
 

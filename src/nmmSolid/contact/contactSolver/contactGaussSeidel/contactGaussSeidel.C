@@ -7,9 +7,11 @@
 #include <Eigen/LU>
 #include <Eigen/SparseLU>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <ostream>
+#include <tuple>
 #include <sstream>
 
 namespace nmm
@@ -213,7 +215,17 @@ void contactGaussSeidel::buildContactSpace()
         }
     }
 
-    // Z = K_b^-1 G_b^T and W_b = G_b Z, body by body, on OpenMP's threads
+    // Z = K_b^-1 G_b^T and W_b = G_b Z, body by body, on OpenMP's
+    // threads. Z's memory is kept from step to step: a container's is
+    // large, and new memory every step is paid for in page faults
+    zStore_.resize(bodies_.size());
+    for (bodyBlock& bb : blocks_)
+    {
+        std::vector<double>& z = zStore_[std::size_t(bb.body)];
+        const std::size_t size = bodies_.dofs(std::size_t(bb.body)).size()*2*bb.contacts.size();
+        if (z.size() < size) z.resize(size);
+        bb.Z = z.data();
+    }
     const long nBlocks = long(blocks_.size());
     #pragma omp parallel for schedule(dynamic, 4)
     for (long k = 0; k < nBlocks; ++k) buildBlock(blocks_[std::size_t(k)]);
@@ -347,11 +359,24 @@ bool contactGaussSeidel::polish()
     }
     else
     {
-        Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-        lu.compute(A);
-        if (lu.info() != Eigen::Success) return false;
-        lambda = lu.solve(rhs);
-        if (lu.info() != Eigen::Success) return false;
+        // The closed set changes little from solve to solve: its
+        // ordering is kept while the pattern is the same
+        const bool same = A.rows() == luRows_
+            && std::equal(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1,
+                          luOuter_.begin(), luOuter_.end())
+            && std::equal(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(),
+                          luInner_.begin(), luInner_.end());
+        if (!same)
+        {
+            lu_.analyzePattern(A);
+            luRows_ = A.rows();
+            luOuter_.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
+            luInner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+        }
+        lu_.factorize(A);
+        if (lu_.info() != Eigen::Success) return false;
+        lambda = lu_.solve(rhs);
+        if (lu_.info() != Eigen::Success) return false;
     }
     if (!lambda.allFinite()) return false;
 
@@ -383,17 +408,26 @@ long contactGaussSeidel::statesOfSolution(std::vector<int>& flips)
         bool changed = false;
         setLambda(i, c.relax(i, rho[i], Wii_[i], changed));
         if (!changed) continue;
-        if
-        (
-            ++flips[i] > 2 && before == contactState::sliding
-         && c.equations(i).state == contactState::bonded
-        )
+        if (++flips[i] > 2)
         {
-            // At the edge of its friction cone, its stick solution
-            // outside and its slip solution inside as the others follow
-            // it: it slides at its friction force, which the cone admits
-            c.setForces(i, solved, contactState::sliding);
-            setLambda(i, solved);
+            // It keeps crossing the edge between two states as the others
+            // follow it: at the edge of its friction cone (its stick
+            // solution outside, its slip solution inside) it slides at its
+            // friction force, which the cone admits; between open and
+            // closed (tension closed, penetration open) it opens, which
+            // pulls nothing
+            const contactState after = c.equations(i).state;
+            const bool opens = before == contactState::open || after == contactState::open;
+            if (opens)
+            {
+                c.setForces(i, Eigen::Vector2d::Zero(), contactState::open);
+                setLambda(i, Eigen::Vector2d::Zero());
+            }
+            else if (after == contactState::bonded)
+            {
+                c.setForces(i, solved, contactState::sliding);
+                setLambda(i, solved);
+            }
             continue;
         }
         ++changes;
@@ -463,23 +497,30 @@ std::pair<int, bool> contactGaussSeidel::sweep(stepReport& report, std::ostream*
 void contactGaussSeidel::buildBlock(bodyBlock& bb) const
 {
     const contactModel& c = contacts();
-    const long nb = long(bodies_.dofs(std::size_t(bb.body)).size());
+    const std::size_t b = std::size_t(bb.body);
+    const long nb = long(bodies_.dofs(b).size());
     const long R = 2*long(bb.contacts.size());
-    std::vector<Eigen::Triplet<double>> t;
+    const std::vector<int>& order = bodies_.rowOrder(b);
+    // G_b^T, in the factor's row order, solved in place into Z: a contact
+    // row has the unknowns of two elements, so W_b = G_b Z costs those
+    // terms times the rows, not the body's size
+    Eigen::Map<bodySystems::rowMajorMatrix> Z(bb.Z, nb, R);
+    Z.setZero();
+    std::vector<std::tuple<int, long, double>> terms;
     for (long r = 0; r < R; ++r)
     {
         const std::size_t spring = 2*std::size_t(bb.contacts[std::size_t(r/2)]) + std::size_t(r%2);
         for (const auto& [dof, coefficient] : c.springTerms(spring))
         {
-            if (bodies_.bodyOf(dof) == bb.body) t.emplace_back(bodies_.localOf(dof), r, coefficient);
+            if (bodies_.bodyOf(dof) != bb.body) continue;
+            const int row = order[std::size_t(bodies_.localOf(dof))];
+            Z(row, r) += coefficient;
+            terms.emplace_back(row, r, coefficient);
         }
     }
-    // G_b^T is sparse (a contact row has the unknowns of two elements):
-    // W_b = G_b Z costs its nonzeros times the rows, not the body's size
-    Eigen::SparseMatrix<double> Gt(nb, R);
-    Gt.setFromTriplets(t.begin(), t.end());
-    bb.Z = bodies_.solveBody(std::size_t(bb.body), Eigen::MatrixXd(Gt));
-    bb.W = Gt.transpose()*bb.Z;
+    bodies_.solveInPlace(b, Z);
+    bb.W = Eigen::MatrixXd::Zero(R, R);
+    for (const auto& [row, r, coefficient] : terms) bb.W.row(r) += coefficient*Z.row(row);
     bb.lambda.resize(R);
     for (long r = 0; r < R; r += 2)
     {
@@ -501,9 +542,14 @@ Eigen::VectorXd contactGaussSeidel::increment(const Eigen::VectorXd& ddFree) con
     Eigen::VectorXd dd = ddFree;
     for (const bodyBlock& bb : blocks_)
     {
-        const Eigen::VectorXd db = bb.Z*bb.lambda;
         const std::vector<int>& dofs = bodies_.dofs(std::size_t(bb.body));
-        for (std::size_t i = 0; i < dofs.size(); ++i) dd[dofs[i]] += db[long(i)];
+        const std::vector<int>& order = bodies_.rowOrder(std::size_t(bb.body));
+        const Eigen::Map<const bodySystems::rowMajorMatrix>
+            Z(bb.Z, long(dofs.size()), bb.lambda.size());
+        for (std::size_t i = 0; i < dofs.size(); ++i)
+        {
+            dd[dofs[i]] += Z.row(order[i]).dot(bb.lambda);
+        }
     }
     return dd;
 }
