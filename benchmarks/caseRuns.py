@@ -43,7 +43,85 @@ def cpuSplit(solverLog):
 
 def linearAlgebra(solverLog):
     """Factorisations and solves with an updated factor, from the log's
-    "Linear algebra:" line ((0, 0) without one)"""
+    "Linear algebra:" line ((0, 0) without one); a run that solved its
+    contacts in contact space gives its factorisations body by body (one
+    solve of every body) and its direct contact-space solves"""
     m = re.search(r"Linear algebra: (\d+) factorisations .*?, (\d+) solves"
-                  r" with an updated factor", solverLog)
-    return (int(m.group(1)), int(m.group(2))) if m else (0, 0)
+                  r" with an updated factor(?:; (\d+) factorisations body by body,"
+                  r" (\d+) direct solves in contact space)?", solverLog)
+    if not m:
+        return (0, 0)
+    if m.group(3):
+        return (int(m.group(1)) + int(m.group(3)), int(m.group(2)) + int(m.group(4)))
+    return (int(m.group(1)), int(m.group(2)))
+
+
+#: The parts of a step the scaling plots show, and the solver log's
+#: timing entries each is made of (the rest is the step's wall time less
+#: these: start-up, output, stress updates)
+STEP_PARTS = (
+    ("detection", ("contact detection",)),
+    ("assembly", ("assembly", "mass matrix", "contact assembly", "contact pattern")),
+    ("contact solve", ("factorisation", "factor update", "solution", "contact update",
+                       "body factorisation", "contact operator", "contact sweeps")),
+)
+
+
+def timeLoop(solverLog):
+    """The time loop's wall time from the solver log ("Time loop (wall
+    s): ..."), None for a log of an earlier build"""
+    m = re.search(r"Time loop \(wall s\): ([0-9.eE+-]+)", solverLog)
+    return float(m.group(1)) if m else None
+
+
+def stepParts(split, wall):
+    """{detection, assembly, contact solve, rest} in seconds, from the
+    solver log's timing split and the time loop's wall time (the rest:
+    writing, stress updates, function objects)"""
+    parts = dict((name, sum(split.get(k, 0) for k in keys)) for name, keys in STEP_PARTS)
+    parts["rest"] = wall - sum(parts.values())
+    return parts
+
+
+def scalingPlot(results, count, title, out, driver):
+    """Time per accepted step against the model's size: out (a PNG) and
+    out.csv. results: dicts with count (the size), unknowns, steps, cuts,
+    iterations (per step), solves (linear solves per step), wall (the
+    solver's wall time) and the stepParts(). The plot needs Debian's
+    matplotlib, seen by /usr/bin/python3"""
+    from pathlib import Path
+    names = [name for name, _ in STEP_PARTS] + ["rest"]
+    out = Path(out)
+    with open(out.with_suffix(".csv"), "w") as csv:
+        csv.write("%s,unknowns,steps,cuts,iterations per step,linear solves per step,"
+                  "wall per step [s],%s\n" % (count, ",".join("%s per step [s]" % p for p in names)))
+        for f in results:
+            csv.write("%d,%d,%d,%d,%.3f,%.3f,%.6g,%s\n" % (
+                f["count"], f["unknowns"], f["steps"], f["cuts"], f["iterations"],
+                f["solves"], f["wall"]/f["steps"],
+                ",".join("%.6g" % (f[p]/f["steps"]) for p in names)))
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (ax, it) = plt.subplots(1, 2, figsize=(11, 4.5))
+    sizes = [f["count"] for f in results]
+    for p in names:
+        ax.loglog(sizes, [max(f[p], 1e-9)/f["steps"] for f in results], "o-", label=p)
+    ax.loglog(sizes, [f["wall"]/f["steps"] for f in results], "k^-", label="step")
+    ax.set_xlabel(count)
+    ax.set_ylabel("wall time per accepted step [s]")
+    ax.set_title(title)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    it.semilogx(sizes, [f["iterations"] for f in results], "o-", label="iterations (sweeps)")
+    it.semilogx(sizes, [f["solves"] for f in results], "s-", label="linear solves")
+    it.semilogx(sizes, [100*f["cuts"]/f["steps"] for f in results], "^-",
+                label="steps cut [% of accepted]")
+    it.set_xlabel(count)
+    it.set_title("Per accepted step")
+    it.grid(True, which="both", alpha=0.3)
+    it.legend()
+    fig.tight_layout()
+    fig.savefig(out, dpi=90)
+    print("%s: wrote %s and %s" % (driver, out, out.with_suffix(".csv")))

@@ -4,7 +4,10 @@ and irregular convex grains above it, placed on a jittered grid so that
 none overlap. The random generator is seeded, so the file is the same on
 every run.
 
-    /usr/bin/python3 makeGrains.py [nColumns nRows seed]
+    /usr/bin/python3 makeGrains.py [nColumns nRows seed [wall [drop]]]
+
+wall is the thickness of the box's walls and floor (default 0.1 m), drop
+the height of the lowest row's cells above the floor (default 0.15 m).
 
 Only the standard library is used (any python3 runs it).
 
@@ -15,9 +18,11 @@ import random
 import sys
 
 nColumns, nRows, seed = (int(a) for a in sys.argv[1:4]) if len(sys.argv) > 3 else (6, 5, 7)
+wall = float(sys.argv[4]) if len(sys.argv) > 4 else 0.1
+drop = float(sys.argv[5]) if len(sys.argv) > 5 else 0.15
 rng = random.Random(seed)
 
-width, wall, floor = 1.0, 0.1, 0.1
+width, floor = 1.0, wall
 pitch = width/nColumns
 
 header = """\
@@ -71,14 +76,14 @@ def polygon(pts):
 
 
 blocks = []
-top = floor + 0.15 + nRows*pitch
+top = floor + drop + nRows*pitch
 box = [(-wall, -floor), (width + wall, -floor), (width + wall, top),
        (width, top), (width, 0), (0, 0), (0, top), (-wall, top)]
 blocks.append("    box { material steel; polygon %s; }" % polygon(box))
 for j in range(nRows):
     for i in range(nColumns):
         cx = (i + 0.5)*pitch + rng.uniform(-0.05, 0.05)*pitch
-        cy = 0.15 + (j + 0.5)*pitch
+        cy = drop + (j + 0.5)*pitch
         blocks.append("    grain%d { material rock; polygon %s; }"
                       % (j*nColumns + i, polygon(grain(cx, cy))))
 

@@ -2,11 +2,14 @@
 """Make sandGrains.png: a binary image of a loose sand packing.
 
 Usage:
-    ./makeImage.py [--seed N] [--output sandGrains.png]
+    ./makeImage.py [--seed N] [--output sandGrains.png] [--size PIXELS]
+                   [--grains N]
 
 The picture is 400 x 400 pixels of 2.5 um, a 1 mm x 1 mm domain, grains
 white (255) on black pore (0): the input of nmmImageToBlocks with
-'type binary; pixelSize 2.5e-6;'.
+'type binary; pixelSize 2.5e-6;'. --size and --grains (default 400 and
+40) make a larger packing of the same sand: 1800 pixels (4.5 mm) and 800
+grains give about 540 (the tutorial's large run).
 
 Each grain is convex: a core polygon (the convex hull of 5 to 11 points
 on a randomly stretched and turned ellipse) grown by a disc of radius
@@ -17,7 +20,11 @@ largest first by random sequential addition: a grain is tried at random
 positions until it keeps at least 2 pore pixels from every grain placed
 and from the image's border (so that every grain is its own 4-connected
 region and none touches the border), and is skipped after too many
-tries. The placing stops at 40 grains. The porosity of such a packing is
+tries. The placing stops at 40 grains (--grains). In an image larger
+than 400 pixels the positions are looked for in a window of 400 x 400
+pixels at a random place, a few windows before the whole image: the
+search is a correlation over the window, which over the whole of a
+large image would take minutes. The porosity of such a packing is
 about 0.45: loose, as poured sand, before compaction.
 
 Everything random comes from Python's random.Random(seed), whose stream
@@ -42,6 +49,8 @@ SIZE = 400              # pixels a side
 PIXEL = 2.5e-6          # m
 GAP = 2                 # pore pixels kept between grains and to the border
 CANDIDATES = 40         # grain sizes drawn; those that find no room are left out
+WINDOW = 400            # pixels a side of the windows a large image is searched in
+WINDOW_TRIES = 8        # windows tried before the whole image
 
 
 def convex_hull(points):
@@ -116,24 +125,37 @@ def grow(mask, radius):
     return out
 
 
+def free_spots(region, halo):
+    """Offsets (r, c) of the halo inside the region, one pixel off its
+    edges, where it meets no grain: the grain pixels under it at every
+    offset by FFT correlation (integers, rounding far below 1/2)"""
+    size = region.shape[0]
+    h, w = halo.shape
+    if h > size - 2 or w > size - 2:
+        return None
+    shape = (2*size, 2*size)
+    under = np.fft.irfft2(np.fft.rfft2(region, shape)*np.conj(np.fft.rfft2(halo, shape)), shape)
+    return under[1:size - h, 1:size - w] < 0.5
+
+
 def place(rng, image, mask):
     """Put the mask at a random position where it fits; False if none"""
     # A pixel within GAP + 1 (Euclidean) of a grain is too close: grown
     # by that, the mask must meet no grain and stay off the border
     halo = grow(mask, GAP + 1)
-    h, w = halo.shape
-    if h > SIZE - 2 or w > SIZE - 2:
-        return False
-    # Grain pixels under the halo at every offset (r, c), by FFT
-    # correlation; the counts are integers, rounding error far below 1/2
-    shape = (2*SIZE, 2*SIZE)
-    under = np.fft.irfft2(np.fft.rfft2(image, shape)*np.conj(np.fft.rfft2(halo, shape)), shape)
-    free = under[1:SIZE - h, 1:SIZE - w] < 0.5
-    spots = np.flatnonzero(free)
+    size = image.shape[0]
+    windows = [(0, 0, size)] if size <= WINDOW else \
+        [(rng.randrange(size - WINDOW + 1), rng.randrange(size - WINDOW + 1), WINDOW)
+         for _ in range(WINDOW_TRIES)] + [(0, 0, size)]
+    for r0, c0, n in windows:
+        free = free_spots(image[r0:r0 + n, c0:c0 + n], halo)
+        spots = np.flatnonzero(free) if free is not None else np.empty(0)
+        if spots.size:
+            break
     if spots.size == 0:
         return False
     r, c = divmod(int(spots[rng.randrange(spots.size)]), free.shape[1])
-    r, c = r + 1, c + 1
+    r, c = r0 + r + 1, c0 + c + 1
     m = GAP + 1
     image[r + m:r + m + mask.shape[0], c + m:c + m + mask.shape[1]] |= mask
     return True
@@ -155,14 +177,20 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seed", type=int, default=2024)
     parser.add_argument("--output", default=str(Path(__file__).with_name("sandGrains.png")))
+    parser.add_argument("--size", type=int, default=SIZE, help="pixels a side")
+    parser.add_argument("--grains", type=int, default=CANDIDATES,
+                        help="grain sizes drawn (those that find no room are left out)")
     args = parser.parse_args()
+    if args.size < 50 or args.grains < 1:
+        parser.error("--size is at least 50 pixels and --grains at least 1")
 
     rng = random.Random(args.seed)
     # Equivalent diameters 120-250 um, the large ones fewer (120 + 130 u^4
     # um, u uniform), placed largest first
-    diameters = sorted((120e-6 + 130e-6*rng.random()**4 for _ in range(CANDIDATES)),
+    diameters = sorted((120e-6 + 130e-6*rng.random()**4 for _ in range(args.grains)),
                        reverse=True)
-    image = np.zeros((SIZE, SIZE), bool)
+    size = args.size
+    image = np.zeros((size, size), bool)
     placed = []
     for d in diameters:
         core, rho = grain_shape(rng, d/PIXEL)
@@ -174,7 +202,7 @@ def main():
     sizes = [d*1e6 for d, _ in placed]
     print("%s: %d x %d pixels of %g m, %d grains (%d angular), equivalent "
           "diameters %.0f-%.0f um, porosity %.3f"
-          % (args.output, SIZE, SIZE, PIXEL, len(placed),
+          % (args.output, size, size, PIXEL, len(placed),
              sum(1 for _, rounded in placed if not rounded),
              min(sizes), max(sizes), 1 - image.mean()))
 

@@ -26,7 +26,7 @@ import re
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-RUNS = ["compaction"]
+RUNS = ["compaction", "compactionLarge"]
 
 
 def table(run, name):

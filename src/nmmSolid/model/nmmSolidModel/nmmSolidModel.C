@@ -386,6 +386,8 @@ bool nmmSolidModel::solveWithContacts
         state_.timeIndex == 0, services, report, dd
     );
     factorUpdates_ += report.factorUpdates;
+    bodyFactorisations_ += report.bodyFactorisations;
+    contactSpaceSolves_ += report.contactSpaceSolves;
     return solved;
 }
 
@@ -609,7 +611,13 @@ void nmmSolidModel::printTiming(std::ostream& os) const
     os << '\n';
     os << "Linear algebra: " << parts_.solver->nFactorisations() << " factorisations ("
         << parts_.solver->nAnalyses() << " with a new pattern), "
-        << factorUpdates_ << " solves with an updated factor\n";
+        << factorUpdates_ << " solves with an updated factor";
+    if (bodyFactorisations_)
+    {
+        os << "; " << bodyFactorisations_ << " factorisations body by body, "
+            << contactSpaceSolves_ << " direct solves in contact space";
+    }
+    os << '\n';
 }
 
 } // End namespace nmm

@@ -125,6 +125,7 @@ void solidRun::start()
         runTime_.adjustTimeStep()
     );
     driver_->setLog(log_);
+    loopClock_.emplace();
     const auto stateDir = runTime_.timePath();
     if (std::filesystem::exists(stateDir/solidOutput::stateFileName()))
     {
@@ -135,11 +136,13 @@ void solidRun::start()
 
 void solidRun::writeFrame()
 {
+    const clockTime clock;
     vtk_.write(solidOutput::frame(*model_), runTime_.timeIndex(), runTime_.value());
     if (model_->contacts())
     {
         vtk_.writeContacts(solidOutput::contactFrame(*model_), runTime_.timeIndex(), runTime_.value());
     }
+    writing_ += clock.elapsed();
 }
 
 
@@ -168,7 +171,9 @@ void solidRun::evolve()
     log_ << "Time = " << runTime_.timeName() << "\n" << std::endl;
     printStep();
     functions_->execute();
+    const clockTime clock;
     runTime_.write();
+    writing_ += clock.elapsed();
     if (runTime_.writeTime()) writeFrame();
     runTime_.printExecutionTime(log_);
 }
@@ -181,9 +186,17 @@ void solidRun::printStep() const
     {
         log_ << "    contacts: open " << r.contacts[0] << ", bonded " << r.contacts[1]
             << ", sliding " << r.contacts[2] << "; iterations " << r.iterations
-            << ", cuts " << r.cuts << ", max penetration " << r.maxPenetration
-            << ", factorisations " << r.factorisations;
-        if (r.factorUpdates) log_ << " (updated " << r.factorUpdates << ')';
+            << ", cuts " << r.cuts << ", max penetration " << r.maxPenetration;
+        if (r.bodyFactorisations)
+        {
+            log_ << ", factorised body by body " << r.bodyFactorisations
+                << ", contact-space solves " << r.contactSpaceSolves;
+        }
+        else
+        {
+            log_ << ", factorisations " << r.factorisations;
+            if (r.factorUpdates) log_ << " (updated " << r.factorUpdates << ')';
+        }
         if (r.overlapsAtStart) log_ << ", overlaps found " << r.overlapsAtStart;
         log_ << '\n';
     }
@@ -200,6 +213,11 @@ void solidRun::end() const
         " factorisation, or the bound of a solve with an updated one): "
         << model_->largestPivotRatio() << '\n';
     model_->printTiming(log_);
+    if (loopClock_)
+    {
+        log_ << "Time loop (wall s): " << loopClock_->elapsed() << ", of which writing "
+            << writing_ << '\n';
+    }
 }
 
 } // End namespace nmm
