@@ -23,6 +23,10 @@ using vec = Eigen::Vector2d;
 //  by one solve)
 constexpr double frictionTolerance = 1e-2;
 
+//- Fewer contacts than this get their terms and history on one thread:
+//  a small model's threads would cost more than they save
+constexpr long minThreadedContacts = 512;
+
 //- State changes of one contact within a step that make it chatter
 constexpr int maxChangesPerStep = 3;
 
@@ -209,11 +213,11 @@ void contactModel::beginStep
 {
     boundaries_.move(space_.cover(), space_.elements(), patchD);
     const auto& loops = boundaries_.loops();
-    const std::vector<contactCandidate> found = search_.find(loops);
+    const std::vector<contactCandidate> found = search_.find(loops, threaded_);
     active_.assign(found.size(), active{});
     // Each contact's terms and springs on its own: on OpenMP's threads
     const long nFound = long(found.size());
-    #pragma omp parallel for schedule(dynamic, 64)
+    #pragma omp parallel for schedule(dynamic, 64) if (threaded_ && nFound >= minThreadedContacts)
     for (long k = 0; k < nFound; ++k)
     {
         const contactCandidate& c = found[std::size_t(k)];
@@ -255,7 +259,7 @@ void contactModel::carryHistory(const std::vector<contactRecord>& history, bool 
 
     // Each contact's history on its own: on OpenMP's threads
     const long nActive = long(active_.size());
-    #pragma omp parallel for schedule(dynamic, 64)
+    #pragma omp parallel for schedule(dynamic, 64) if (threaded_ && nActive >= minThreadedContacts)
     for (long k = 0; k < nActive; ++k)
     {
         active& a = active_[std::size_t(k)];

@@ -54,6 +54,11 @@ bool isReflex(const contactLoop& l, int i, double angleTolerance)
 }
 
 
+//- Fewer loop pairs than this are searched on one thread: a pair is a
+//  few microseconds, and a small model's threads would cost more
+constexpr long minThreadedPairs = 128;
+
+
 //- isReflex of every vertex of the loops, worked out when first asked: a
 //  vertex is looked at by every candidate of every pair its loop is in
 class reflexFlags
@@ -854,7 +859,8 @@ std::vector<std::pair<std::size_t, std::size_t>> contactSearch::loopPairs
 
 std::vector<contactCandidate> contactSearch::find
 (
-    const std::vector<contactLoop>& loops
+    const std::vector<contactLoop>& loops,
+    bool threaded
 ) const
 {
     const auto pairs = loopPairs(loops);
@@ -883,7 +889,7 @@ std::vector<contactCandidate> contactSearch::find
     // same list whatever the threads)
     std::vector<std::vector<contactCandidate>> found(pairs.size());
     const long nPairs = long(pairs.size());
-    #pragma omp parallel
+    #pragma omp parallel if (threaded && nPairs >= minThreadedPairs)
     {
         pairBuffers buffers;
         #pragma omp for schedule(dynamic, 16)

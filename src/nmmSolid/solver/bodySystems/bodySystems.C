@@ -13,6 +13,12 @@ namespace nmm
 namespace
 {
 
+//- Fewer bodies than this are factorised and solved on one thread: a
+//  grain's work is microseconds, and threads started for a few of them
+//  cost more than they save (a two-block case ran half as fast again)
+constexpr long minThreadedBodies = 64;
+
+
 //- The root of i's set, halving the path on the way
 int findRoot(std::vector<int>& parent, int i)
 {
@@ -187,7 +193,7 @@ void bodySystems::factorise(const sparseMatrix& K)
     if (!samePattern(K)) split(K);
     const long nBodies = long(bodies_.size());
     std::vector<char> failed(bodies_.size(), 0);
-    #pragma omp parallel for schedule(dynamic)
+    #pragma omp parallel for schedule(dynamic) if (nBodies >= minThreadedBodies)
     for (long b = 0; b < nBodies; ++b)
     {
         failed[std::size_t(b)] = !factoriseBody(bodies_[std::size_t(b)], K);
@@ -232,7 +238,7 @@ Eigen::VectorXd bodySystems::solve(const Eigen::VectorXd& f) const
 {
     Eigen::VectorXd x(f.size());
     const long nBodies = long(bodies_.size());
-    #pragma omp parallel for schedule(dynamic)
+    #pragma omp parallel for schedule(dynamic) if (nBodies >= minThreadedBodies)
     for (long b = 0; b < nBodies; ++b)
     {
         const body& bd = bodies_[std::size_t(b)];

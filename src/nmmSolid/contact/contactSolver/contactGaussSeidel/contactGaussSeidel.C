@@ -22,6 +22,10 @@ addToRunTimeSelectionTable(contactSolver, contactGaussSeidel, "gaussSeidel");
 namespace
 {
 
+//- Fewer bodies with contacts than this build W on one thread (see
+//  nmm::bodySystems)
+constexpr long minThreadedBlocks = 64;
+
 //- Sweeps without a state change after which the forces are solved for
 //  directly, and how often a step may do so
 constexpr int quietSweeps = 3;
@@ -74,6 +78,13 @@ contactGaussSeidel::contactGaussSeidel(const dictionary& d)
     const keywordTable& k = keywords();
     tolerance_ = k.get<double>(d, "tolerance");
     maxSweeps_ = k.get<int>(d, "maxSweeps");
+}
+
+
+void contactGaussSeidel::setUp(problem p)
+{
+    penaltyOpenClose::setUp(std::move(p));
+    contacts().threaded(true);
 }
 
 
@@ -227,7 +238,7 @@ void contactGaussSeidel::buildContactSpace()
         bb.Z = z.data();
     }
     const long nBlocks = long(blocks_.size());
-    #pragma omp parallel for schedule(dynamic, 4)
+    #pragma omp parallel for schedule(dynamic, 4) if (nBlocks >= minThreadedBlocks)
     for (long k = 0; k < nBlocks; ++k) buildBlock(blocks_[std::size_t(k)]);
 
     Wii_.assign(nc, Eigen::Matrix2d::Zero());
