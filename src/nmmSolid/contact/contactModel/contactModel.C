@@ -916,8 +916,17 @@ Eigen::Vector2d contactModel::slipSolution
     const double perUnit = a.law->slidingFriction(s);
     const double lambda0 = a.record.multiplier;
     const double soft = 1 + a.kN*(W(0, 0) + W(0, 1)*perUnit);
+    if (!(soft > 0))
+    {
+        // The friction would pull the contact open faster than its spring
+        // closes it (Painleve's paradox): no slip solution. It jams,
+        // stuck, where the stick solution presses it; else it opens
+        d.state = trial.Fn > 0 ? contactState::bonded : contactState::open;
+        return d.state == contactState::bonded
+            ? Eigen::Vector2d(trial.Fn, trial.Fs) : Eigen::Vector2d::Zero();
+    }
     const double Fn = (lambda0 - a.kN*gapFree)/soft;
-    if (!(soft > 0) || !(Fn > 0))
+    if (!(Fn > 0))
     {
         d.state = contactState::open;
         return Eigen::Vector2d::Zero();

@@ -401,7 +401,7 @@ bool contactGaussSeidel::polish()
 }
 
 
-long contactGaussSeidel::statesOfSolution(std::vector<int>& flips)
+long contactGaussSeidel::statesOfSolution(std::vector<int>& flips, long& held)
 {
     // Every contact's relative displacement from the same forces, then
     // each relaxed: a change of state is the law's answer to this
@@ -423,20 +423,25 @@ long contactGaussSeidel::statesOfSolution(std::vector<int>& flips)
         if (!changed) continue;
         if (++flips[i] > 2)
         {
+            ++held;
             // It keeps crossing the edge between two states as the others
-            // follow it: at the edge of its friction cone (its stick
-            // solution outside, its slip solution inside) it slides at its
-            // friction force, which the cone admits; between open and
-            // closed (tension closed, penetration open) it opens, which
-            // pulls nothing
+            // follow it, and the answer is at the edge. At its friction
+            // cone's (its stick solution outside, its slip solution
+            // inside) it slides at its friction force, which the cone
+            // admits. Between closed and open it stays in the state whose
+            // force is the nearer to none: closed, the solve's tension;
+            // open, its spring's force at the penetration it would have
             const contactState after = c.equations(i).state;
-            const bool opens = before == contactState::open || after == contactState::open;
-            if (opens)
+            if (before != contactState::open && after == contactState::open)
             {
-                c.setForces(i, Eigen::Vector2d::Zero(), contactState::open);
-                setLambda(i, Eigen::Vector2d::Zero());
+                const double penetration = -(c.startGap(i) + rho[i][0]);
+                if (-solved[0] < c.penalties(i)[0]*penetration)
+                {
+                    c.setForces(i, solved, before);
+                    setLambda(i, solved);
+                }
             }
-            else if (after == contactState::bonded)
+            else if (before == contactState::sliding && after == contactState::bonded)
             {
                 c.setForces(i, solved, contactState::sliding);
                 setLambda(i, solved);
@@ -458,7 +463,12 @@ bool contactGaussSeidel::activeSet(int& solves)
     {
         if (!polish()) break;
         ++solves;
-        if (statesOfSolution(flips) == 0) return true;
+        long held = 0;
+        if (statesOfSolution(flips, held) > 0) continue;
+        // The forces of the states held at an edge, which the last
+        // solve did not have
+        if (held > 0 && polish()) ++solves;
+        return true;
     }
     // Back to the Gauss-Seidel iterate, which a cycle of states would
     // otherwise reset to the same solves
