@@ -12,16 +12,27 @@ import subprocess
 import sys
 
 
-def run(driver, case, application, binDir):
-    """Run binDir/application in case, its output in log.<application>;
-    exit 1 naming the log when it fails. Returns the log's text"""
+def run(driver, case, application, binDir, env=None):
+    """Run binDir/application in case (env: its environment, default
+    this one's), its output in log.<application>; exit 1 naming the log
+    when it fails. Returns the log's text"""
     log = case / ("log." + application)
     with open(log, "w") as out:
-        r = subprocess.run([str(binDir / application)], cwd=case,
+        r = subprocess.run([str(binDir / application)], cwd=case, env=env,
                            stdout=out, stderr=subprocess.STDOUT)
     if r.returncode != 0:
         sys.exit("%s: %s failed; see %s" % (driver, application, log))
     return log.read_text()
+
+
+def setKeyword(driver, path, keyword, value):
+    """Set the one entry keyword of the dictionary file path to value;
+    exit 1 when there is not exactly one"""
+    text = path.read_text()
+    new, n = re.subn(r"(?m)^(\s*%s\s+)[^;]*;" % keyword, r"\g<1>%s;" % value, text)
+    if n != 1:
+        sys.exit("%s: %s: expected one '%s' entry" % (driver, path, keyword))
+    path.write_text(new)
 
 
 def table(path):
@@ -72,6 +83,22 @@ def timeLoop(solverLog):
     s): ..."), None for a log of an earlier build"""
     m = re.search(r"Time loop \(wall s\): ([0-9.eE+-]+)", solverLog)
     return float(m.group(1)) if m else None
+
+
+def solverFigures(case, solverLog):
+    """What a run of nmmSolidFoam in case did, from its log and its
+    contactStatistics table (postProcessing/contacts): accepted steps,
+    steps cut and redone, iterations and linear solves per step, the
+    timing split, and the time loop's wall time"""
+    f = {"split": cpuSplit(solverLog)}
+    f["factorisations"], f["updates"] = linearAlgebra(solverLog)
+    f["stats"] = table(next((case / "postProcessing/contacts").glob("*/contacts.dat")))
+    f["steps"] = len(f["stats"])
+    f["cuts"] = int(sum(r[8] for r in f["stats"]))
+    f["iterations"] = sum(r[7] for r in f["stats"])/f["steps"]
+    f["solves"] = (f["factorisations"] + f["updates"])/f["steps"]
+    f["wall"] = timeLoop(solverLog)
+    return f
 
 
 def stepParts(split, wall):
