@@ -36,12 +36,6 @@ constexpr int maxActiveSetSolves = 8;
 constexpr int denseContactRows = 40;
 
 
-void addTime(const contactSolver::services& s, const char* part, const clockTime& clock)
-{
-    if (s.timing) (*s.timing)[part] += clock.elapsed();
-}
-
-
 double along(const contactModel::terms& t, const Eigen::VectorXd& x)
 {
     double s = 0;
@@ -120,17 +114,17 @@ bool contactGaussSeidel::solve
         byPenalty_ = false;
         return solved;
     }
-    addTime(srv, "body factorisation", clock);
+    srv.addTime("body factorisation", clock);
     ++report.bodyFactorisations;
 
     clock = clockTime();
     contacts().beginStep(patchD0, history, atStart);
-    addTime(srv, "contact detection", clock);
+    srv.addTime("contact detection", clock);
 
     clock = clockTime();
     const long n = long(sys.f.size());
     const Eigen::VectorXd ddFree = bodies_.solve(sys.f + contacts().pressureLoads(n));
-    addTime(srv, "solution", clock);
+    srv.addTime("solution", clock);
 
     // The contacts closed at the start or that the free motion closes;
     // the others join when the solution would close them
@@ -149,14 +143,14 @@ bool contactGaussSeidel::solve
     {
         clock = clockTime();
         buildContactSpace();
-        addTime(srv, "contact operator", clock);
+        srv.addTime("contact operator", clock);
         clock = clockTime();
         const auto [n, ok] = sweep(report, srv.log);
         sweeps += n;
         settled = ok;
         dd = increment(ddFree);
         joined = settled ? includeClosing(dd) : 0;
-        addTime(srv, "contact sweeps", clock);
+        srv.addTime("contact sweeps", clock);
     }
     const auto counts = contacts().settleForces(dd);
     report.iterations = sweeps;

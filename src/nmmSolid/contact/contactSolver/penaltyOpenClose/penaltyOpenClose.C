@@ -26,12 +26,6 @@ constexpr double searchOverStep = 2.5;
 //- Deepest penetration a step may end with, over the search distance
 constexpr double penetrationOverSearch = 0.4;
 
-
-void addTime(const contactSolver::services& s, const char* part, const clockTime& clock)
-{
-    if (s.timing) (*s.timing)[part] += clock.elapsed();
-}
-
 } // End anonymous namespace
 
 
@@ -148,11 +142,11 @@ void penaltyOpenClose::beginStep
 {
     clockTime clock;
     contacts_->beginStep(patchD0, history, atStart);
-    addTime(srv, "contact detection", clock);
+    srv.addTime("contact detection", clock);
     loads_ = sys.f + contacts_->pressureLoads(sys.f.size());
     clock = clockTime();
     pattern_ = contacts_->withPattern(sys.K);
-    addTime(srv, "contact pattern", clock);
+    srv.addTime("contact pattern", clock);
     factorised_ = false;
 }
 
@@ -176,7 +170,7 @@ bool penaltyOpenClose::openClose
         clockTime clock;
         const std::vector<double> k = contacts_->springStiffnesses();
         const Eigen::VectorXd f = loads_ + contacts_->forces(n);
-        addTime(srv, "contact assembly", clock);
+        srv.addTime("contact assembly", clock);
 
         const Eigen::VectorXd delta = solveWithStates(k, f, dd, srv, report);
 
@@ -197,7 +191,7 @@ bool penaltyOpenClose::openClose
         // small where only states at rounding switch, of order one where
         // the iteration has not found the step's states
         const auto [residual, ofLoads] = relativeResiduals(sys, dd);
-        addTime(srv, "contact update", clock);
+        srv.addTime("contact update", clock);
         ++report.iterations;
         report.contacts = counts.states;
         report.bondsBroken += counts.bondsBroken;
@@ -302,7 +296,7 @@ void penaltyOpenClose::refactorise(const std::vector<double>& k, const services&
     clockTime clock;
     K1_ = pattern_;
     contacts_->addSprings(K1_);
-    addTime(srv, "contact assembly", clock);
+    srv.addTime("contact assembly", clock);
     srv.factorise(K1_);
     work_ = srv.factorWork ? srv.factorWork() : std::pair<double, double>{};
     std::vector<lowRankUpdate::term> terms(k.size());
