@@ -8,8 +8,8 @@ Usage:
 The picture is 400 x 400 pixels of 2.5 um, a 1 mm x 1 mm domain, grains
 white (255) on black pore (0): the input of nmmImageToBlocks with
 'type binary; pixelSize 2.5e-6;'. --size and --grains (default 400 and
-40) make a larger packing of the same sand: 1800 pixels (4.5 mm) and 800
-grains give about 540 (the tutorial's large run).
+40) make a larger packing of the same sand: 1800 pixels (4.5 mm) and 600
+grains, all placed, make sandGrainsLarge.png (the tutorial's large run).
 
 Each grain is convex: a core polygon (the convex hull of 5 to 11 points
 on a randomly stretched and turned ellipse) grown by a disc of radius

@@ -215,14 +215,14 @@ void bodySystems::factorise(const sparseMatrix& K)
 
 Eigen::MatrixXd bodySystems::solveBody(std::size_t b, const Eigen::MatrixXd& F) const
 {
-    const body& bd = bodies_[b];
-    if (bd.isSparse())
-    {
-        bodySystems::rowMajorMatrix X = bd.sparse->permutationP()*F;
-        solveBlock(bd.sparse->matrixL().nestedExpression(), X);
-        return bd.sparse->permutationPinv()*X;
-    }
-    return bd.dense.solve(F);
+    // solveInPlace's, its rows taken to the factor's order and back
+    const std::vector<int>& order = bodies_[b].rowOrder;
+    rowMajorMatrix X(F.rows(), F.cols());
+    for (long i = 0; i < F.rows(); ++i) X.row(order[std::size_t(i)]) = F.row(i);
+    solveInPlace(b, Eigen::Map<rowMajorMatrix>(X.data(), X.rows(), X.cols()));
+    Eigen::MatrixXd result(F.rows(), F.cols());
+    for (long i = 0; i < F.rows(); ++i) result.row(i) = X.row(order[std::size_t(i)]);
+    return result;
 }
 
 
