@@ -161,3 +161,68 @@ TEST(bodySystems, aSingularBodyIsNamedByItsFirstUnknown)
         }
     }
 }
+
+
+TEST(bodySystems, contactOperatorIsGKInverseGTransposed)
+{
+    // A grid of springs (its sparse factor's elimination tree branches,
+    // unlike a chain's) held at one corner, and a small dense chain
+    const int side = 15;
+    std::vector<Eigen::Triplet<double>> t;
+    const int nGrid = side*side;
+    for (int i = 0; i < side; ++i)
+    {
+        for (int j = 0; j < side; ++j)
+        {
+            const int k = i*side + j;
+            t.emplace_back(k, k, 4.0 + (k == 0 ? 1.0 : 0.0));
+            if (j + 1 < side) { t.emplace_back(k, k + 1, -1.0); t.emplace_back(k + 1, k, -1.0); }
+            if (i + 1 < side) { t.emplace_back(k, k + side, -1.0); t.emplace_back(k + side, k, -1.0); }
+        }
+    }
+    const chains small({9}, 2);
+    for (int k = 0; k < small.K.outerSize(); ++k)
+    {
+        for (sparseMatrix::InnerIterator it(small.K, k); it; ++it)
+        {
+            t.emplace_back(nGrid + int(it.row()), nGrid + int(it.col()), it.value());
+        }
+    }
+    sparseMatrix K(nGrid + 9, nGrid + 9);
+    K.setFromTriplets(t.begin(), t.end());
+    nmm::bodySystems bodies;
+    bodies.factorise(K);
+    ASSERT_EQ(bodies.size(), 2u);
+
+    std::mt19937 random(4);
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+    {
+        const auto& dofs = bodies.dofs(b);
+        const int m = int(dofs.size());
+        // Rows of a few terms each at scattered unknowns, one repeated
+        const long rows = 7;
+        std::vector<nmm::bodySystems::rowTerm> terms;
+        Eigen::MatrixXd G = Eigen::MatrixXd::Zero(rows, m);
+        std::uniform_int_distribution<int> unknown(0, m - 1);
+        std::uniform_real_distribution<double> coefficient(-1, 1);
+        for (long r = 0; r < rows; ++r)
+        {
+            for (int k = 0; k < 4; ++k)
+            {
+                const int u = k == 3 ? terms.back().unknown : unknown(random);
+                const double c = coefficient(random);
+                terms.push_back({r, u, c});
+                G(r, u) += c;
+            }
+        }
+        Eigen::MatrixXd Kb(m, m);
+        for (int i = 0; i < m; ++i)
+        {
+            for (int j = 0; j < m; ++j) Kb(i, j) = K.coeff(dofs[std::size_t(i)], dofs[std::size_t(j)]);
+        }
+        const Eigen::MatrixXd expected = G*Kb.llt().solve(G.transpose());
+        const Eigen::MatrixXd W = bodies.contactOperator(b, rows, terms);
+        EXPECT_LT((W - expected).norm(), 1e-12*expected.norm()) << "body " << b;
+        EXPECT_EQ(W, W.transpose()) << "body " << b;
+    }
+}

@@ -154,11 +154,6 @@ bool bodySystems::factoriseBody(body& b, const sparseMatrix& K) const
                 Kb(localOf_[std::size_t(it.row())], c) = it.value();
             }
         }
-        if (b.rowOrder.size() != std::size_t(m))
-        {
-            b.rowOrder.resize(std::size_t(m));
-            std::iota(b.rowOrder.begin(), b.rowOrder.end(), 0);
-        }
         b.dense.compute(Kb);
         return b.dense.info() == Eigen::Success
             && pivotsHold(b.dense.matrixLLT().diagonal(), Kb.diagonal());
@@ -215,22 +210,95 @@ void bodySystems::factorise(const sparseMatrix& K)
 
 Eigen::MatrixXd bodySystems::solveBody(std::size_t b, const Eigen::MatrixXd& F) const
 {
-    // solveInPlace's, its rows taken to the factor's order and back
-    const std::vector<int>& order = bodies_[b].rowOrder;
+    const body& bd = bodies_[b];
+    if (!bd.isSparse()) return bd.dense.solve(F);
+    // Both triangular solves in the factor's order, every column at once
+    const std::vector<int>& order = bd.rowOrder;
     rowMajorMatrix X(F.rows(), F.cols());
     for (long i = 0; i < F.rows(); ++i) X.row(order[std::size_t(i)]) = F.row(i);
-    solveInPlace(b, Eigen::Map<rowMajorMatrix>(X.data(), X.rows(), X.cols()));
+    solveBlock(bd.sparse->matrixL().nestedExpression(), X);
     Eigen::MatrixXd result(F.rows(), F.cols());
     for (long i = 0; i < F.rows(); ++i) result.row(i) = X.row(order[std::size_t(i)]);
     return result;
 }
 
 
-void bodySystems::solveInPlace(std::size_t b, Eigen::Map<rowMajorMatrix> X) const
+bodySystems::rowMajorMatrix bodySystems::forwardSolve
+(
+    const body& b,
+    long rows,
+    const std::vector<rowTerm>& terms,
+    std::vector<int>& reach
+) const
+{
+    const sparseMatrix& L = b.sparse->matrixL().nestedExpression();
+    const int* outer = L.outerIndexPtr();
+    const int* inner = L.innerIndexPtr();
+    const double* value = L.valuePtr();
+    // A column's rows below the diagonal are ancestors of it in the
+    // elimination tree (its parent the first of them), so the terms'
+    // unknowns and their ancestors are the rows the solve can fill
+    std::vector<int> at(std::size_t(L.cols()), -1);
+    reach.clear();
+    for (const rowTerm& t : terms)
+    {
+        for (int j = b.rowOrder[std::size_t(t.unknown)]; j >= 0 && at[std::size_t(j)] < 0;)
+        {
+            at[std::size_t(j)] = 0;
+            reach.push_back(j);
+            int parent = -1;
+            for (int p = outer[j] + 1; p < outer[j + 1]; ++p)
+            {
+                if (parent < 0 || inner[p] < parent) parent = inner[p];
+            }
+            j = parent;
+        }
+    }
+    std::sort(reach.begin(), reach.end());
+    for (std::size_t k = 0; k < reach.size(); ++k) at[std::size_t(reach[k])] = int(k);
+
+    rowMajorMatrix Y = rowMajorMatrix::Zero(long(reach.size()), rows);
+    for (const rowTerm& t : terms)
+    {
+        Y(at[std::size_t(b.rowOrder[std::size_t(t.unknown)])], t.row) += t.coefficient;
+    }
+    for (std::size_t k = 0; k < reach.size(); ++k)
+    {
+        const int j = reach[k];
+        Y.row(long(k)) /= value[outer[j]];
+        for (int p = outer[j] + 1; p < outer[j + 1]; ++p)
+        {
+            Y.row(at[std::size_t(inner[p])]) -= value[p]*Y.row(long(k));
+        }
+    }
+    return Y;
+}
+
+
+Eigen::MatrixXd bodySystems::contactOperator
+(
+    std::size_t b,
+    long rows,
+    const std::vector<rowTerm>& terms
+) const
 {
     const body& bd = bodies_[b];
-    if (bd.isSparse()) solveBlock(bd.sparse->matrixL().nestedExpression(), X);
-    else bd.dense.solveInPlace(X);
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(rows, rows);
+    if (bd.isSparse())
+    {
+        std::vector<int> reach;
+        const rowMajorMatrix Y = forwardSolve(bd, rows, terms, reach);
+        W.selfadjointView<Eigen::Lower>().rankUpdate(Y.transpose());
+    }
+    else
+    {
+        Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(long(bd.dofs.size()), rows);
+        for (const rowTerm& t : terms) Y(t.unknown, t.row) += t.coefficient;
+        bd.dense.matrixL().solveInPlace(Y);
+        W.selfadjointView<Eigen::Lower>().rankUpdate(Y.transpose());
+    }
+    W.triangularView<Eigen::StrictlyUpper>() = W.transpose();
+    return W;
 }
 
 

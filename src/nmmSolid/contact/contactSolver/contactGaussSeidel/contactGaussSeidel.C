@@ -123,7 +123,8 @@ bool contactGaussSeidel::solve
 
     clock = clockTime();
     const long n = long(sys.f.size());
-    const Eigen::VectorXd ddFree = bodies_.solve(sys.f + contacts().pressureLoads(n));
+    const Eigen::VectorXd f = sys.f + contacts().pressureLoads(n);
+    const Eigen::VectorXd ddFree = bodies_.solve(f);
     srv.addTime("solution", clock);
 
     // The contacts closed at the start or that the free motion closes;
@@ -148,7 +149,7 @@ bool contactGaussSeidel::solve
         const auto [n, ok] = sweep(report, srv.log);
         sweeps += n;
         settled = ok;
-        dd = increment(ddFree);
+        dd = increment(f);
         joined = settled ? includeClosing(dd) : 0;
         srv.addTime("contact sweeps", clock);
     }
@@ -220,17 +221,7 @@ void contactGaussSeidel::buildContactSpace()
         }
     }
 
-    // Z = K_b^-1 G_b^T and W_b = G_b Z, body by body, on OpenMP's
-    // threads. Z's memory is kept from step to step: a container's is
-    // large, and new memory every step is paid for in page faults
-    zStore_.resize(bodies_.size());
-    for (bodyBlock& bb : blocks_)
-    {
-        std::vector<double>& z = zStore_[std::size_t(bb.body)];
-        const std::size_t size = bodies_.dofs(std::size_t(bb.body)).size()*2*bb.contacts.size();
-        if (z.size() < size) z.resize(size);
-        bb.Z = z.data();
-    }
+    // W_b = G_b K_b^-1 G_b^T, body by body, on OpenMP's threads
     const long nBlocks = long(blocks_.size());
     #pragma omp parallel for schedule(dynamic, 4) if (nBlocks >= minThreadedBlocks)
     for (long k = 0; k < nBlocks; ++k) buildBlock(blocks_[std::size_t(k)]);
@@ -514,30 +505,18 @@ std::pair<int, bool> contactGaussSeidel::sweep(stepReport& report, std::ostream*
 void contactGaussSeidel::buildBlock(bodyBlock& bb) const
 {
     const contactModel& c = contacts();
-    const std::size_t b = std::size_t(bb.body);
-    const long nb = long(bodies_.dofs(b).size());
     const long R = 2*long(bb.contacts.size());
-    const std::vector<int>& order = bodies_.rowOrder(b);
-    // G_b^T, in the factor's row order, solved in place into Z: a contact
-    // row has the unknowns of two elements, so W_b = G_b Z costs those
-    // terms times the rows, not the body's size
-    Eigen::Map<bodySystems::rowMajorMatrix> Z(bb.Z, nb, R);
-    Z.setZero();
-    std::vector<std::tuple<int, long, double>> terms;
+    std::vector<bodySystems::rowTerm> terms;
     for (long r = 0; r < R; ++r)
     {
         const std::size_t spring = 2*std::size_t(bb.contacts[std::size_t(r/2)]) + std::size_t(r%2);
         for (const auto& [dof, coefficient] : c.springTerms(spring))
         {
             if (bodies_.bodyOf(dof) != bb.body) continue;
-            const int row = order[std::size_t(bodies_.localOf(dof))];
-            Z(row, r) += coefficient;
-            terms.emplace_back(row, r, coefficient);
+            terms.push_back({r, bodies_.localOf(dof), coefficient});
         }
     }
-    bodies_.solveInPlace(b, Z);
-    bb.W = Eigen::MatrixXd::Zero(R, R);
-    for (const auto& [row, r, coefficient] : terms) bb.W.row(r) += coefficient*Z.row(row);
+    bb.W = bodies_.contactOperator(std::size_t(bb.body), R, terms);
     bb.lambda.resize(R);
     for (long r = 0; r < R; r += 2)
     {
@@ -554,21 +533,25 @@ std::string contactGaussSeidel::cutReason(bool settled, const stepReport& report
 }
 
 
-Eigen::VectorXd contactGaussSeidel::increment(const Eigen::VectorXd& ddFree) const
+Eigen::VectorXd contactGaussSeidel::increment(const Eigen::VectorXd& f) const
 {
-    Eigen::VectorXd dd = ddFree;
-    for (const bodyBlock& bb : blocks_)
+    // The contacts' forces on the bodies, G^T lambda, with the loads:
+    // one solve a body
+    Eigen::VectorXd load = f;
+    const contactModel& c = contacts();
+    for (std::size_t i = 0; i < sides_.size(); ++i)
     {
-        const std::vector<int>& dofs = bodies_.dofs(std::size_t(bb.body));
-        const std::vector<int>& order = bodies_.rowOrder(std::size_t(bb.body));
-        const Eigen::Map<const bodySystems::rowMajorMatrix>
-            Z(bb.Z, long(dofs.size()), bb.lambda.size());
-        for (std::size_t i = 0; i < dofs.size(); ++i)
+        if (sides_[i][0][0] < 0) continue;
+        const Eigen::Vector2d lambda = lambdaOf(i);
+        for (int spring = 0; spring < 2; ++spring)
         {
-            dd[dofs[i]] += Z.row(order[i]).dot(bb.lambda);
+            for (const auto& [dof, coefficient] : c.springTerms(2*i + std::size_t(spring)))
+            {
+                load[dof] += coefficient*lambda[spring];
+            }
         }
     }
-    return dd;
+    return bodies_.solve(load);
 }
 
 } // End namespace nmm
