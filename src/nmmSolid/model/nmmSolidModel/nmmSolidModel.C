@@ -119,6 +119,7 @@ void nmmSolidModel::createContacts()
     p.maxDisplacementRatio = stepControl_.maxDisplacementRatio;
     p.dynamic = parts_.scheme->dynamic();
     parts_.contactMethod->setUp(std::move(p));
+    assembler_->threaded(parts_.contactMethod->solvesBodyByBody());
 }
 
 
