@@ -140,10 +140,10 @@ bool contactGaussSeidel::solve
     }
     int sweeps = 0;
     bool settled = false;
-    for (long joined = 1; joined > 0;)
+    for (long joined = 1, pass = 0; joined > 0; ++pass)
     {
         clock = clockTime();
-        buildContactSpace();
+        buildContactSpace(pass == 0);
         srv.addTime("contact operator", clock);
         clock = clockTime();
         const auto [n, ok] = sweep(report, srv.log);
@@ -185,29 +185,37 @@ long contactGaussSeidel::includeClosing(const Eigen::VectorXd& dd)
 }
 
 
-void contactGaussSeidel::buildContactSpace()
+void contactGaussSeidel::buildContactSpace(bool fresh)
 {
+    // A step's space is built from nothing; the contacts that join it
+    // later are added to their bodies' blocks, and only those blocks are
+    // built again: the others' W and forces stay as the sweeps left them
     const contactModel& c = contacts();
     const std::size_t nc = c.size();
-    blocks_.clear();
-    sides_.assign(nc, {{{-1, -1}, {-1, -1}}});
-    std::vector<int> blockOfBody(bodies_.size(), -1);
+    if (fresh)
+    {
+        blocks_.clear();
+        sides_.assign(nc, {{{-1, -1}, {-1, -1}}});
+        blockOfBody_.assign(bodies_.size(), -1);
+    }
+    std::vector<char> grown(blocks_.size(), 0);
     for (std::size_t i = 0; i < nc; ++i)
     {
-        if (!included_[i]) continue;
+        if (!included_[i] || sides_[i][0][0] >= 0) continue;
         int nSides = 0;
         for (int spring = 0; spring < 2; ++spring)
         {
             for (const auto& [dof, coefficient] : c.springTerms(2*i + std::size_t(spring)))
             {
                 const int b = bodies_.bodyOf(dof);
-                if (blockOfBody[std::size_t(b)] < 0)
+                if (blockOfBody_[std::size_t(b)] < 0)
                 {
-                    blockOfBody[std::size_t(b)] = int(blocks_.size());
+                    blockOfBody_[std::size_t(b)] = int(blocks_.size());
                     blocks_.emplace_back();
                     blocks_.back().body = b;
+                    grown.push_back(0);
                 }
-                const int k = blockOfBody[std::size_t(b)];
+                const int k = blockOfBody_[std::size_t(b)];
                 if (sides_[i][0][0] == k || sides_[i][1][0] == k) continue;
                 if (nSides == 2)
                 {
@@ -217,14 +225,20 @@ void contactGaussSeidel::buildContactSpace()
                 bodyBlock& bb = blocks_[std::size_t(k)];
                 sides_[i][std::size_t(nSides++)] = {k, 2*int(bb.contacts.size())};
                 bb.contacts.push_back(int(i));
+                grown[std::size_t(k)] = 1;
             }
         }
     }
 
-    // W_b = G_b K_b^-1 G_b^T, body by body, on OpenMP's threads
-    const long nBlocks = long(blocks_.size());
-    #pragma omp parallel for schedule(dynamic, 4) if (nBlocks >= minThreadedBlocks)
-    for (long k = 0; k < nBlocks; ++k) buildBlock(blocks_[std::size_t(k)]);
+    // W_b = G_b K_b^-1 G_b^T of the blocks that grew, on OpenMP's threads
+    std::vector<std::size_t> build;
+    for (std::size_t k = 0; k < blocks_.size(); ++k)
+    {
+        if (grown[k]) build.push_back(k);
+    }
+    const long nBuild = long(build.size());
+    #pragma omp parallel for schedule(dynamic, 4) if (nBuild >= minThreadedBlocks)
+    for (long k = 0; k < nBuild; ++k) buildBlock(blocks_[build[std::size_t(k)]]);
 
     Wii_.assign(nc, Eigen::Matrix2d::Zero());
     for (std::size_t i = 0; i < nc; ++i)
@@ -517,8 +531,11 @@ void contactGaussSeidel::buildBlock(bodyBlock& bb) const
         }
     }
     bb.W = bodies_.contactOperator(std::size_t(bb.body), R, terms);
-    bb.lambda.resize(R);
-    for (long r = 0; r < R; r += 2)
+    // The rows it had keep their forces; the new ones start from their
+    // contacts' forces at the step's start
+    const long kept = bb.lambda.size();
+    bb.lambda.conservativeResize(R);
+    for (long r = kept; r < R; r += 2)
     {
         bb.lambda.segment<2>(r) = c.startForces(std::size_t(bb.contacts[std::size_t(r/2)]));
     }
