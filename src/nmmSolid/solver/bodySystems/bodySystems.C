@@ -75,16 +75,6 @@ void solveBlock(const Eigen::SparseMatrix<double>& L, Matrix& X)
 } // End anonymous namespace
 
 
-bool bodySystems::samePattern(const sparseMatrix& K) const
-{
-    return K.rows() == long(bodyOf_.size())
-        && std::equal(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1,
-                      kOuter_.begin(), kOuter_.end())
-        && std::equal(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros(),
-                      kInner_.begin(), kInner_.end());
-}
-
-
 void bodySystems::split(const sparseMatrix& K)
 {
     const int n = int(K.rows());
@@ -118,8 +108,7 @@ void bodySystems::split(const sparseMatrix& K)
         localOf_[std::size_t(i)] = int(b.dofs.size());
         b.dofs.push_back(i);
     }
-    kOuter_.assign(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1);
-    kInner_.assign(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros());
+    kPattern_.keep(K);
 }
 
 
@@ -159,19 +148,13 @@ bool bodySystems::factoriseBody(body& b, const sparseMatrix& K) const
             && pivotsHold(b.dense.matrixLLT().diagonal(), Kb.diagonal());
     }
     const sparseMatrix Kb = bodyMatrix(b, K);
-    const bool same = b.sparse
-        && std::equal(Kb.outerIndexPtr(), Kb.outerIndexPtr() + Kb.outerSize() + 1,
-                      b.outer.begin(), b.outer.end())
-        && std::equal(Kb.innerIndexPtr(), Kb.innerIndexPtr() + Kb.nonZeros(),
-                      b.inner.begin(), b.inner.end());
-    if (!same)
+    if (!b.sparse || !b.pattern.matches(Kb))
     {
         b.sparse = std::make_unique<Eigen::SimplicialLLT<sparseMatrix>>();
         b.sparse->analyzePattern(Kb);
         const auto& P = b.sparse->permutationP().indices();
         b.rowOrder.assign(P.data(), P.data() + P.size());
-        b.outer.assign(Kb.outerIndexPtr(), Kb.outerIndexPtr() + Kb.outerSize() + 1);
-        b.inner.assign(Kb.innerIndexPtr(), Kb.innerIndexPtr() + Kb.nonZeros());
+        b.pattern.keep(Kb);
     }
     b.sparse->factorize(Kb);
     return b.sparse->info() == Eigen::Success
@@ -185,7 +168,7 @@ bool bodySystems::factoriseBody(body& b, const sparseMatrix& K) const
 
 void bodySystems::factorise(const sparseMatrix& K)
 {
-    if (!samePattern(K)) split(K);
+    if (!kPattern_.matches(K)) split(K);
     const long nBodies = long(bodies_.size());
     std::vector<char> failed(bodies_.size(), 0);
     #pragma omp parallel for schedule(dynamic) if (nBodies >= minThreadedBodies)

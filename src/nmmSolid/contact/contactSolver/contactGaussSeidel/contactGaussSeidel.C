@@ -4,7 +4,6 @@
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/solver/linearSolver/singularSystem/singularSystem.H"
 
-#include <Eigen/KLUSupport>
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -65,28 +64,14 @@ const keywordTable& contactGaussSeidel::keywords()
 }
 
 
-//- KLU, not Eigen's SparseLU: the closed contacts' rows of W are a few
-//  hundred to a few thousand, sparse and unsymmetric (the sliding ones'
-//  friction rows), and KLU factorised a pile's in 0.8 ms against 1.3 ms,
-//  0.5 ms against 0.8 ms with its analysis kept
-struct contactGaussSeidel::directLU
-:
-    Eigen::KLU<Eigen::SparseMatrix<double>>
-{};
-
-
 contactGaussSeidel::contactGaussSeidel(const dictionary& d)
 :
-    penaltyOpenClose(d, keywords()),
-    lu_(std::make_unique<directLU>())
+    penaltyOpenClose(d, keywords())
 {
     const keywordTable& k = keywords();
     tolerance_ = k.get<double>(d, "tolerance");
     maxSweeps_ = k.get<int>(d, "maxSweeps");
 }
-
-
-contactGaussSeidel::~contactGaussSeidel() = default;
 
 
 void contactGaussSeidel::setUp(problem p)
@@ -317,36 +302,68 @@ std::tuple<double, double, long> contactGaussSeidel::sweepOnce()
 }
 
 
-bool contactGaussSeidel::polish()
+bool contactGaussSeidel::polish(bool fresh)
 {
     // The closed contacts' rows; a sliding one's shear row is its friction
     // law, with W's entries there kept as zeros: the pattern changes only
-    // when a contact opens or closes, not when it sticks or slips, and the
-    // sparse LU's analysis is kept while it is the same
+    // when a contact opens or closes, not when it sticks or slips. Within
+    // an active set the rows stay those of its first solve: a contact that
+    // opens keeps its rows as lambda = 0 with W's entries kept as zeros,
+    // so the pattern, and with it the sparse LU's analysis and pivot
+    // order, change only when a contact closes
     contactModel& c = contacts();
     const std::size_t nc = sides_.size();
-    std::vector<int> at(nc, -1);
     std::vector<contactModel::stateEquations> eq(nc);
-    int m = 0;
+    bool newRows = fresh || rowOf_.size() != nc;
     for (std::size_t i = 0; i < nc; ++i)
     {
         eq[i] = c.equations(i);
-        if (isClosed(eq[i].state) && sides_[i][0][0] >= 0) { at[i] = m; m += 2; }
+        if (isClosed(eq[i].state) && sides_[i][0][0] >= 0 && !newRows && rowOf_[i] < 0)
+        {
+            newRows = true;
+        }
     }
+    if (newRows)
+    {
+        rowOf_.assign(nc, -1);
+        directRows_ = 0;
+        for (std::size_t i = 0; i < nc; ++i)
+        {
+            if (isClosed(eq[i].state) && sides_[i][0][0] >= 0)
+            {
+                rowOf_[i] = directRows_;
+                directRows_ += 2;
+            }
+        }
+    }
+    const int m = directRows_;
     if (m == 0) return true;
 
-    std::vector<Eigen::Triplet<double>> t;
+    std::vector<Eigen::Triplet<double>>& t = directTriplets_;
+    t.clear();
     Eigen::VectorXd rhs(m);
+    // Per contact with rows, the factor of W's entries in its normal and
+    // shear rows; W's columns of an open contact are zero too
+    std::vector<Eigen::Vector2d> rowFactor(nc, Eigen::Vector2d::Zero());
     for (std::size_t i = 0; i < nc; ++i)
     {
-        if (at[i] < 0) continue;
-        const int r = at[i];
-        const bool sliding = eq[i].state == contactState::sliding;
+        const int r = rowOf_[i];
+        if (r < 0) continue;
+        const contactState state = eq[i].state;
+        if (!isClosed(state))
+        {
+            t.emplace_back(r, r, 1.0);
+            t.emplace_back(r + 1, r + 1, 1.0);
+            rhs.segment<2>(r).setZero();
+            continue;
+        }
+        const bool sliding = state == contactState::sliding;
+        rowFactor[i] = {1.0, sliding ? 0.0 : 1.0};
         t.emplace_back(r, r, eq[i].compliance[0]);
         rhs[r] = eq[i].rhs[0] - free_[i][0];
         t.emplace_back(r + 1, r + 1, sliding ? 1.0 : eq[i].compliance[1]);
         rhs[r + 1] = sliding ? 0 : eq[i].rhs[1] - free_[i][1];
-        if (sliding) t.emplace_back(r + 1, r, -eq[i].friction);
+        t.emplace_back(r + 1, r, sliding ? -eq[i].friction : 0.0);
     }
     for (const bodyBlock& bb : blocks_)
     {
@@ -354,64 +371,48 @@ bool contactGaussSeidel::polish()
         for (std::size_t a = 0; a < nb; ++a)
         {
             const std::size_t i = std::size_t(bb.contacts[a]);
-            if (at[i] < 0) continue;
-            const double shear = eq[i].state == contactState::sliding ? 0.0 : 1.0;
+            const int r = rowOf_[i];
+            if (r < 0) continue;
             for (std::size_t b = 0; b < nb; ++b)
             {
-                const int j = at[std::size_t(bb.contacts[b])];
-                if (j < 0) continue;
+                const std::size_t j = std::size_t(bb.contacts[b]);
+                const int col = rowOf_[j];
+                if (col < 0) continue;
+                const double column = rowFactor[j][0];
                 for (int cb = 0; cb < 2; ++cb)
                 {
-                    t.emplace_back(at[i], j + cb, bb.W(long(2*a), long(2*b) + cb));
-                    t.emplace_back(at[i] + 1, j + cb, shear*bb.W(long(2*a) + 1, long(2*b) + cb));
+                    for (int ra = 0; ra < 2; ++ra)
+                    {
+                        t.emplace_back(r + ra, col + cb, rowFactor[i][ra]*column
+                            *bb.W(long(2*a) + ra, long(2*b) + cb));
+                    }
                 }
             }
         }
     }
-    Eigen::VectorXd lambda;
-    if (!solveDirect(m, t, rhs, lambda)) return false;
+    Eigen::VectorXd lambda = rhs;
+    directMatrix_.resize(m, m);
+    directMatrix_.setFromTriplets(t.begin(), t.end());
+    if (!solveDirect(directMatrix_, lambda)) return false;
 
     for (std::size_t i = 0; i < nc; ++i)
     {
-        if (at[i] < 0) continue;
-        c.setForces(i, lambda.segment<2>(at[i]));
-        setLambda(i, lambda.segment<2>(at[i]));
+        if (rowOf_[i] < 0 || !isClosed(eq[i].state)) continue;
+        c.setForces(i, lambda.segment<2>(rowOf_[i]));
+        setLambda(i, lambda.segment<2>(rowOf_[i]));
     }
     return true;
 }
 
 
-bool contactGaussSeidel::solveDirect
-(
-    int m,
-    const std::vector<Eigen::Triplet<double>>& t,
-    const Eigen::VectorXd& rhs,
-    Eigen::VectorXd& x
-)
+bool contactGaussSeidel::solveDirect(const Eigen::SparseMatrix<double>& A, Eigen::VectorXd& x)
 {
-    Eigen::SparseMatrix<double> A(m, m);
-    A.setFromTriplets(t.begin(), t.end());
-    if (m <= denseContactRows)
+    if (A.rows() <= denseContactRows)
     {
-        x = Eigen::PartialPivLU<Eigen::MatrixXd>(Eigen::MatrixXd(A)).solve(rhs);
+        x = Eigen::PartialPivLU<Eigen::MatrixXd>(Eigen::MatrixXd(A)).solve(x);
         return x.allFinite();
     }
-    const bool same = A.rows() == luRows_
-        && std::equal(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1,
-                      luOuter_.begin(), luOuter_.end())
-        && std::equal(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(),
-                      luInner_.begin(), luInner_.end());
-    if (!same)
-    {
-        lu_->analyzePattern(A);
-        luRows_ = A.rows();
-        luOuter_.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
-        luInner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
-    }
-    lu_->factorize(A);
-    if (lu_->info() != Eigen::Success) return false;
-    x = lu_->solve(rhs);
-    return lu_->info() == Eigen::Success && x.allFinite();
+    return lu_.factorise(A) && lu_.solveInPlace(x);
 }
 
 
@@ -475,13 +476,13 @@ bool contactGaussSeidel::activeSet(int& solves)
     std::vector<int> flips(sides_.size(), 0);
     for (int k = 0; k < maxActiveSetSolves; ++k)
     {
-        if (!polish()) break;
+        if (!polish(k == 0)) break;
         ++solves;
         long held = 0;
         if (statesOfSolution(flips, held) > 0) continue;
         // The forces of the states held at an edge, which the last
         // solve did not have
-        if (held > 0 && polish()) ++solves;
+        if (held > 0 && polish(false)) ++solves;
         return true;
     }
     // Back to the Gauss-Seidel iterate, which a cycle of states would
