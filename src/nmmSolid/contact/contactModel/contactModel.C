@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <tuple>
 
 namespace nmm
 {
@@ -249,12 +250,15 @@ void contactModel::beginStep
 
 void contactModel::carryHistory(const std::vector<contactRecord>& history, bool start)
 {
-    // By (vertex loop, vertex, edge loop): the edges a vertex touched
-    std::multimap<std::tuple<int, int, int>, const contactRecord*> byVertex;
-    for (const auto& r : history)
-    {
-        byVertex.emplace(std::make_tuple(r.vertexLoop, r.vertex, r.edgeLoop), &r);
-    }
+    // By (vertex loop, vertex, edge loop): the edges a vertex touched, in
+    // the history's order among equals. A sorted list, not a multimap: a
+    // node per record was most of the history's time in a pile
+    using key = std::tuple<int, int, int>;
+    std::vector<std::pair<key, const contactRecord*>> byVertex;
+    byVertex.reserve(history.size());
+    for (const auto& r : history) byVertex.emplace_back(key{r.vertexLoop, r.vertex, r.edgeLoop}, &r);
+    const auto byKey = [](const auto& a, const auto& b) { return a.first < b.first; };
+    std::stable_sort(byVertex.begin(), byVertex.end(), byKey);
     const auto& loops = boundaries_.loops();
 
     // Each contact's history on its own: on OpenMP's threads
@@ -265,7 +269,8 @@ void contactModel::carryHistory(const std::vector<contactRecord>& history, bool 
         active& a = active_[std::size_t(k)];
         contactRecord& r = a.record;
         const contactRecord* old = nullptr;
-        const auto range = byVertex.equal_range({r.vertexLoop, r.vertex, r.edgeLoop});
+        const auto range = std::equal_range(byVertex.begin(), byVertex.end(),
+            std::pair<key, const contactRecord*>{{r.vertexLoop, r.vertex, r.edgeLoop}, nullptr}, byKey);
         // The same edge, or else the nearest one along the loop that is
         // still within the search distance of the vertex: a loop cut by
         // the cover has edges shorter than a step's slide
