@@ -157,10 +157,11 @@ double contactModel::weight(double l) const
 }
 
 
-contactModel::terms contactModel::relativeTerms
+std::pair<contactModel::terms, contactModel::terms> contactModel::relativeTerms
 (
     const contactCandidate& c,
-    const Eigen::Vector2d& dir
+    const Eigen::Vector2d& n,
+    const Eigen::Vector2d& s
 ) const
 {
     const auto& loops = boundaries_.loops();
@@ -168,27 +169,45 @@ contactModel::terms contactModel::relativeTerms
     const contactVertex& a = loops[c.edgeLoop].edgeStart(c.edge);
     const manifoldElement::baryPoint edgePoint = (1 - c.t)*a.lambda + c.t*a.edgeEndLambda;
 
-    // u(vertex) - u(edge point), each through its element's weights; the
-    // terms of a dof both share are summed after sorting
-    terms all;
+    // u(vertex) - u(edge point), each through its element's weights, along
+    // n and s at once (one list, one sort); the terms of a dof both share
+    // are summed after sorting
+    struct term { int dof; double alongN, alongS; };
+    std::vector<term> all;
     const auto add = [&](std::int32_t e, const manifoldElement::baryPoint& w, double sign)
     {
         for (const auto& t : space_.dofTerms(e))
         {
-            all.emplace_back(t.dof, sign*w[t.local/2]*dir[t.local%2]*t.coefficient);
+            all.push_back
+            ({
+                t.dof,
+                sign*w[t.local/2]*n[t.local%2]*t.coefficient,
+                sign*w[t.local/2]*s[t.local%2]*t.coefficient
+            });
         }
     };
     add(v.element, v.lambda, 1);
     add(a.element, edgePoint, -1);
-    std::stable_sort(all.begin(), all.end(), [](const auto& x, const auto& y)
+    std::stable_sort(all.begin(), all.end(), [](const term& x, const term& y)
     {
-        return x.first < y.first;
+        return x.dof < y.dof;
     });
-    terms merged;
-    for (const auto& [dof, c] : all)
+    std::pair<terms, terms> merged;
+    auto& [g, h] = merged;
+    g.reserve(all.size());
+    h.reserve(all.size());
+    for (const term& t : all)
     {
-        if (!merged.empty() && merged.back().first == dof) merged.back().second += c;
-        else merged.emplace_back(dof, c);
+        if (!g.empty() && g.back().first == t.dof)
+        {
+            g.back().second += t.alongN;
+            h.back().second += t.alongS;
+        }
+        else
+        {
+            g.emplace_back(t.dof, t.alongN);
+            h.emplace_back(t.dof, t.alongS);
+        }
     }
     return merged;
 }
@@ -239,8 +258,7 @@ void contactModel::beginStep
         a.n = vec(s.y(), -s.x());
         a.record.normal = a.n;
         a.record.point = loops[c.vertexLoop].vertices[c.vertex].x;
-        a.g = relativeTerms(c, a.n);
-        a.h = relativeTerms(c, s);
+        std::tie(a.g, a.h) = relativeTerms(c, a.n, s);
         const auto p = pressure_.find(a.record.key());
         if (p != pressure_.end()) a.pressureForce = p->second*c.length*thickness_;
     }
