@@ -192,6 +192,95 @@ TEST(nmmSolidModel, spinningBlockKeepsItsArea)
 }
 
 
+namespace
+{
+
+//- A free block (no gravity, no support) under DDA, its velocity set to
+//  a rigid motion (translation (0.3, -0.2), spin 2 rad/s about (0.1, 0))
+//  plus stretch times a deformation (0.5 x, -0.2 y); one step of 0.01 s
+std::unique_ptr<nmmSolidModel> ringingBlock
+(
+    const testCase& c,
+    double stretch
+)
+{
+    auto m = c.model();
+    nm::solidState s = m->saveState();
+    const auto& pc = m->elements();
+    for (std::size_t u = 0; u < pc.unknownPatches().size(); ++u)
+    {
+        const Eigen::Vector2d x = m->cover().nodes()[pc.patches()[pc.unknownPatches()[u]].node];
+        s.V.segment<2>(2*u) = Eigen::Vector2d(0.3, -0.2)
+            + 2*Eigen::Vector2d(-x.y(), x.x() - 0.1)
+            + stretch*Eigen::Vector2d(0.5*x.x(), -0.2*x.y());
+    }
+    m->restoreState(s);
+    m->solveStep(0.01);
+    m->acceptStep();
+    return m;
+}
+
+
+//- The block's momentum (x, y) and angular momentum about the origin, and
+//  the part of V that is no rigid motion (the least-squares residual of
+//  V on the three rigid modes at the patches' current positions) over |V|
+std::pair<Eigen::Vector3d, double> momentaAndDeformation(const nmmSolidModel& m)
+{
+    const Eigen::VectorXd& V = m.state().V;
+    const Eigen::VectorXd MV = m.assembler().mass()*V;
+    const auto& pc = m.elements();
+    const auto d = m.patchDisplacements();
+    Eigen::MatrixXd R = Eigen::MatrixXd::Zero(V.size(), 3);
+    Eigen::Vector3d momenta = Eigen::Vector3d::Zero();
+    for (std::size_t u = 0; u < pc.unknownPatches().size(); ++u)
+    {
+        const auto p = pc.unknownPatches()[u];
+        const Eigen::Vector2d x = m.cover().nodes()[pc.patches()[p].node] + d.col(p);
+        R.block<2, 3>(2*long(u), 0) << 1, 0, -x.y(), 0, 1, x.x();
+        momenta += R.block<2, 3>(2*long(u), 0).transpose()*MV.segment<2>(2*long(u));
+    }
+    const Eigen::VectorXd fit = R*R.colPivHouseholderQr().solve(V);
+    return {momenta, (V - fit).norm()/V.norm()};
+}
+
+} // End anonymous namespace
+
+
+TEST(nmmSolidModel, deformationVelocityDroppedKeepsTheMomenta)
+{
+    const auto make = [](const std::string& ratio)
+    {
+        return testCase
+        (
+            "a { material rock; polygon ((-0.5 -0.3) (0.5 -0.3) (0.5 0.3) (-0.5 0.3)); }",
+            "all { type block; block a; }",
+            "type structured; cellSize 0.1;",
+            "analysis dynamic; timeScheme { type DDA; velocityRatio 1;"
+                " deformationVelocityRatio " + ratio + "; }\n",
+            "all { type tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }"
+        );
+    };
+    const testCase kept = make("1"), dropped = make("0"), halved = make("0.5");
+
+    // Ringing: the step leaves V with a deformation part, which ratio 0
+    // drops and 0.5 halves, the momenta as they were
+    const auto [pKept, dKept] = momentaAndDeformation(*ringingBlock(kept, 1));
+    const auto [pDropped, dDropped] = momentaAndDeformation(*ringingBlock(dropped, 1));
+    const auto [pHalved, dHalved] = momentaAndDeformation(*ringingBlock(halved, 1));
+    ASSERT_GT(dKept, 1e-2);
+    EXPECT_LT(dDropped, 1e-12);
+    EXPECT_NEAR(dHalved, 0.5*dKept, 1e-2*dKept);
+    EXPECT_LT((pDropped - pKept).norm(), 1e-12*pKept.norm());
+    EXPECT_LT((pHalved - pKept).norm(), 1e-12*pKept.norm());
+
+    // A rigid motion is left as it is
+    const auto rigidKept = ringingBlock(kept, 0);
+    const auto rigidDropped = ringingBlock(dropped, 0);
+    EXPECT_LT((rigidDropped->state().V - rigidKept->state().V).norm(),
+              1e-10*rigidKept->state().V.norm());
+}
+
+
 TEST(nmmSolidModel, restartReproducesAnUninterruptedRun)
 {
     const auto make = []

@@ -3,6 +3,7 @@
 #include "nmmSolid/global/clock/clockTime.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/dictionary/IOerror.H"
+#include "nmmSolid/solver/rigidVelocity/rigidVelocity.H"
 #include "nmmSolid/solver/timeScheme/staticScheme/staticScheme.H"
 
 #include <Eigen/Eigenvalues>
@@ -476,6 +477,14 @@ void nmmSolidModel::updateTrial
     trial_.D = state_.D + dd;
     scheme.update(dd, dt, state_.V, state_.A, trial_.V, trial_.A);
     update_->correctRotations(patchD0, rotations, scheme.dynamic(), trial_);
+    if (scheme.deformationVelocityRatio() < 1)
+    {
+        rigidVelocity(elements(), cover().nodes()).scaleDeformation
+        (
+            assembler_->mass(), space_->patchDisplacements(trial_.D),
+            scheme.deformationVelocityRatio(), trial_.V
+        );
+    }
     if (contacts()) trial_.contacts = contacts()->records();
     trialReady_ = true;
     timing_["update"] += clock.elapsed();

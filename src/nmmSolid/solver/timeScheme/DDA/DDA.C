@@ -18,22 +18,31 @@ const keywordTable& DDA::keywords()
         t.scalar("velocityRatio", "factor on the start velocity of a step:"
             " 0 static relaxation, 1 all momentum kept", "").required()
             .range(0, 1);
+        t.scalar("deformationVelocityRatio", "factor on each block's velocity"
+            " less its rigid motion after a step: 1 keeps it, 0 drops it (its"
+            " elastic ringing), momentum and angular momentum kept", "")
+            .defaultValue(1).range(0, 1);
         return t;
     }();
     return table;
 }
 
 
-DDA::DDA(double velocityRatio)
+DDA::DDA(double velocityRatio, double deformationVelocityRatio)
 :
     Newmark(0.5, 1),
-    velocityRatio_(velocityRatio)
+    velocityRatio_(velocityRatio),
+    deformationVelocityRatio_(deformationVelocityRatio)
 {}
 
 
 DDA::DDA(const dictionary& dict)
 :
-    DDA((keywords().validate(dict), keywords().get<double>(dict, "velocityRatio")))
+    DDA
+    (
+        (keywords().validate(dict), keywords().get<double>(dict, "velocityRatio")),
+        keywords().get<double>(dict, "deformationVelocityRatio")
+    )
 {}
 
 
@@ -55,7 +64,12 @@ void DDA::update
 std::string DDA::name() const
 {
     std::ostringstream os;
-    os << "DDA (velocityRatio " << velocityRatio_ << ')';
+    os << "DDA (velocityRatio " << velocityRatio_;
+    if (deformationVelocityRatio_ < 1)
+    {
+        os << ", deformationVelocityRatio " << deformationVelocityRatio_;
+    }
+    os << ')';
     return os.str();
 }
 
