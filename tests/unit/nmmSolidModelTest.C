@@ -281,6 +281,37 @@ TEST(nmmSolidModel, deformationVelocityDroppedKeepsTheMomenta)
 }
 
 
+TEST(nmmSolidModel, deformationVelocityOfAHeldBlockIsScaledWhole)
+{
+    // A beam held at its left end, under gravity: no free rigid motion,
+    // so its whole velocity is scaled (half with ratio 0.5)
+    const auto make = [](const std::string& ratio)
+    {
+        return testCase
+        (
+            "a { material rock; polygon ((0 0) (4 0) (4 1) (0 1)); }",
+            "left { type box; min (-1 -1); max (0.01 2); } rest { type box; min (0.01 -1); max (5 2); }",
+            "type structured; cellSize 0.25;",
+            "analysis dynamic; timeScheme { type DDA; velocityRatio 1;"
+                " deformationVelocityRatio " + ratio + "; }\n",
+            "left { type fixedValue; value uniform (0 0 0); }"
+            "rest { type tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }",
+            "(0 -9.81 0)"
+        );
+    };
+    const testCase kept = make("1"), halved = make("0.5");
+    auto a = kept.model();
+    auto b = halved.model();
+    a->solveStep(2e-3);
+    a->acceptStep();
+    b->solveStep(2e-3);
+    b->acceptStep();
+    const Eigen::VectorXd& V = a->state().V;
+    ASSERT_GT(V.norm(), 0);
+    EXPECT_LT((b->state().V - 0.5*V).norm(), 1e-12*V.norm());
+}
+
+
 TEST(nmmSolidModel, restartReproducesAnUninterruptedRun)
 {
     const auto make = []

@@ -479,7 +479,7 @@ void nmmSolidModel::updateTrial
     update_->correctRotations(patchD0, rotations, scheme.dynamic(), trial_);
     if (scheme.deformationVelocityRatio() < 1)
     {
-        rigidVelocity(elements(), cover().nodes()).scaleDeformation
+        rigidVelocity(elements(), cover().nodes(), heldBlocks()).scaleDeformation
         (
             assembler_->mass(), space_->patchDisplacements(trial_.D),
             scheme.deformationVelocityRatio(), trial_.V
@@ -488,6 +488,22 @@ void nmmSolidModel::updateTrial
     if (contacts()) trial_.contacts = contacts()->records();
     trialReady_ = true;
     timing_["update"] += clock.elapsed();
+}
+
+
+std::vector<char> nmmSolidModel::heldBlocks() const
+{
+    const auto& segments = elements().segments();
+    std::vector<char> held(geometry().blocks().size(), 0);
+    for (std::size_t s = 0; s < segments.size(); ++s)
+    {
+        const int r = parts_.segmentRule[s];
+        if (r < 0) continue;
+        const auto type = parts_.rules[std::size_t(r)].type;
+        if (type != boundaryRule::kind::fixedValue && type != boundaryRule::kind::fixedNormal) continue;
+        held[std::size_t(elements().elements()[std::size_t(segments[s].element)].block)] = 1;
+    }
+    return held;
 }
 
 

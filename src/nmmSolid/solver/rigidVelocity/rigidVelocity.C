@@ -10,12 +10,20 @@ namespace nmm
 rigidVelocity::rigidVelocity
 (
     const physicalCover& pc,
-    const std::vector<Eigen::Vector2d>& nodes
+    const std::vector<Eigen::Vector2d>& nodes,
+    const std::vector<char>& held
 )
 :
     pc_(pc),
-    nodes_(nodes)
+    nodes_(nodes),
+    held_(held)
 {}
+
+
+bool rigidVelocity::isHeld(std::size_t block) const
+{
+    return block < held_.size() && held_[block];
+}
 
 
 void rigidVelocity::scaleDeformation
@@ -73,16 +81,17 @@ void rigidVelocity::scaleDeformation
         RMR[b] += R.row(i).transpose()*MR.row(i);
         RMV[b] += R.row(i).transpose()*MV[i];
     }
-    // A block of one patch has no rotation of its own: it is left as it is
+    // A held block keeps no rigid part; a free block of one patch has no
+    // rotation of its own, and is left as it is
     std::vector<Eigen::Vector3d> rigid(nBlocks, Eigen::Vector3d::Zero());
     for (std::size_t b = 0; b < nBlocks; ++b)
     {
-        if (count[b] > 1) rigid[b] = RMR[b].ldlt().solve(RMV[b]);
+        if (!isHeld(b) && count[b] > 1) rigid[b] = RMR[b].ldlt().solve(RMV[b]);
     }
     for (long i = 0; i < V.size(); ++i)
     {
         const std::size_t b = std::size_t(block[std::size_t(i/2)]);
-        if (count[b] < 2) continue;
+        if (!isHeld(b) && count[b] < 2) continue;
         const double r = R.row(i).dot(rigid[b]);
         V[i] = r + ratio*(V[i] - r);
     }
