@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 
 #include <algorithm>
+#include <utility>
 
 namespace nmm
 {
@@ -11,12 +12,12 @@ rigidVelocity::rigidVelocity
 (
     const physicalCover& pc,
     const std::vector<Eigen::Vector2d>& nodes,
-    const std::vector<char>& held
+    std::vector<char> held
 )
 :
     pc_(pc),
     nodes_(nodes),
-    held_(held)
+    held_(std::move(held))
 {}
 
 
