@@ -3,7 +3,6 @@
 #include "nmmSolid/global/clock/clockTime.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/dictionary/IOerror.H"
-#include "nmmSolid/solver/rigidVelocity/rigidVelocity.H"
 #include "nmmSolid/solver/timeScheme/staticScheme/staticScheme.H"
 
 #include <Eigen/Eigenvalues>
@@ -87,6 +86,10 @@ nmmSolidModel::nmmSolidModel(parts p)
     update_ = std::make_unique<updatedLagrangian>
     (
         *space_, *assembler_, parts_.geometry->nBlocks(), parts_.largeDisplacement
+    );
+    rigidVelocity_ = std::make_unique<rigidVelocity>
+    (
+        *parts_.elements, parts_.cover->nodes(), heldBlocks()
     );
     if (parts_.scheme->dynamic())
     {
@@ -479,7 +482,7 @@ void nmmSolidModel::updateTrial
     update_->correctRotations(patchD0, rotations, scheme.dynamic(), trial_);
     if (scheme.deformationVelocityRatio() < 1)
     {
-        rigidVelocity(elements(), cover().nodes(), heldBlocks()).scaleDeformation
+        rigidVelocity_->scaleDeformation
         (
             assembler_->mass(), space_->patchDisplacements(trial_.D),
             scheme.deformationVelocityRatio(), trial_.V

@@ -59,28 +59,34 @@ void rigidVelocity::scaleDeformation
     }
     for (std::size_t b = 0; b < nBlocks; ++b) if (count[b]) centre[b] /= count[b];
 
-    // R: per unknown, the two translations and the rotation
-    Eigen::MatrixXd R = Eigen::MatrixXd::Zero(V.size(), 3);
+    // R: per unknown patch, its two rows of the two translations and the
+    // rotation
+    std::vector<Eigen::Matrix<double, 2, 3>> R(nu);
     for (std::size_t u = 0; u < nu; ++u)
     {
         const Eigen::Vector2d r = x[u] - centre[std::size_t(block[u])];
-        const long i = 2*long(u);
-        R(i, 0) = 1;
-        R(i + 1, 1) = 1;
-        R(i, 2) = -r.y();
-        R(i + 1, 2) = r.x();
+        R[u] << 1, 0, -r.y(),
+                0, 1, r.x();
     }
+    const auto row = [&R](long i) -> Eigen::Vector3d
+    {
+        return R[std::size_t(i/2)].row(i % 2).transpose();
+    };
 
-    // R^T M R and R^T M V block by block: M couples no two blocks
-    const Eigen::MatrixXd MR = M*R;
-    const Eigen::VectorXd MV = M*V;
+    // R^T M R and R^T M V block by block, over M's entries: M couples no
+    // two blocks
     std::vector<Eigen::Matrix3d> RMR(nBlocks, Eigen::Matrix3d::Zero());
     std::vector<Eigen::Vector3d> RMV(nBlocks, Eigen::Vector3d::Zero());
-    for (long i = 0; i < V.size(); ++i)
+    for (long j = 0; j < M.outerSize(); ++j)
     {
-        const std::size_t b = std::size_t(block[std::size_t(i/2)]);
-        RMR[b] += R.row(i).transpose()*MR.row(i);
-        RMV[b] += R.row(i).transpose()*MV[i];
+        const Eigen::Vector3d rj = row(j);
+        for (sparseMatrix::InnerIterator it(M, j); it; ++it)
+        {
+            const std::size_t b = std::size_t(block[std::size_t(it.row()/2)]);
+            const Eigen::Vector3d ri = row(it.row());
+            RMR[b] += it.value()*ri*rj.transpose();
+            RMV[b] += it.value()*V[j]*ri;
+        }
     }
     // A held block keeps no rigid part; a free block of one patch has no
     // rotation of its own, and is left as it is
@@ -93,7 +99,7 @@ void rigidVelocity::scaleDeformation
     {
         const std::size_t b = std::size_t(block[std::size_t(i/2)]);
         if (!isHeld(b) && count[b] < 2) continue;
-        const double r = R.row(i).dot(rigid[b]);
+        const double r = row(i).dot(rigid[b]);
         V[i] = r + ratio*(V[i] - r);
     }
 }

@@ -304,16 +304,33 @@ std::tuple<double, double, long> contactGaussSeidel::sweepOnce()
 
 bool contactGaussSeidel::polish(bool fresh)
 {
-    // The closed contacts' rows; a sliding one's shear row is its friction
-    // law, with W's entries there kept as zeros: the pattern changes only
-    // when a contact opens or closes, not when it sticks or slips. Within
-    // an active set the rows stay those of its first solve: a contact that
-    // opens keeps its rows as lambda = 0 with W's entries kept as zeros,
-    // so the pattern, and with it the sparse LU's analysis and pivot
-    // order, change only when a contact closes
+    numberDirectRows(fresh);
+    if (directRows_ == 0) return true;
+    Eigen::VectorXd lambda;
+    assembleDirect(lambda);
+    if (!solveDirect(directMatrix_, lambda)) return false;
+
     contactModel& c = contacts();
+    for (std::size_t i = 0; i < sides_.size(); ++i)
+    {
+        if (rowOf_[i] < 0 || !isClosed(directEquations_[i].state)) continue;
+        c.setForces(i, lambda.segment<2>(rowOf_[i]));
+        setLambda(i, lambda.segment<2>(rowOf_[i]));
+    }
+    return true;
+}
+
+
+void contactGaussSeidel::numberDirectRows(bool fresh)
+{
+    // Within an active set the rows stay those of its first solve: a
+    // contact that opens keeps its rows as lambda = 0 with W's entries
+    // kept as zeros, so the pattern, and with it the sparse LU's analysis
+    // and pivot order, change only when a contact closes
+    const contactModel& c = contacts();
     const std::size_t nc = sides_.size();
-    std::vector<contactModel::stateEquations> eq(nc);
+    auto& eq = directEquations_;
+    eq.resize(nc);
     bool newRows = fresh || rowOf_.size() != nc;
     for (std::size_t i = 0; i < nc; ++i)
     {
@@ -323,28 +340,34 @@ bool contactGaussSeidel::polish(bool fresh)
             newRows = true;
         }
     }
-    if (newRows)
+    if (!newRows) return;
+    rowOf_.assign(nc, -1);
+    directRows_ = 0;
+    for (std::size_t i = 0; i < nc; ++i)
     {
-        rowOf_.assign(nc, -1);
-        directRows_ = 0;
-        for (std::size_t i = 0; i < nc; ++i)
+        if (isClosed(eq[i].state) && sides_[i][0][0] >= 0)
         {
-            if (isClosed(eq[i].state) && sides_[i][0][0] >= 0)
-            {
-                rowOf_[i] = directRows_;
-                directRows_ += 2;
-            }
+            rowOf_[i] = directRows_;
+            directRows_ += 2;
         }
     }
-    const int m = directRows_;
-    if (m == 0) return true;
+}
 
+
+void contactGaussSeidel::assembleDirect(Eigen::VectorXd& rhs)
+{
+    // A sliding contact's shear row is its friction law, with W's entries
+    // there kept as zeros: the pattern changes only when a contact opens
+    // or closes, not when it sticks or slips
+    const auto& eq = directEquations_;
+    const std::size_t nc = sides_.size();
     std::vector<Eigen::Triplet<double>>& t = directTriplets_;
     t.clear();
-    Eigen::VectorXd rhs(m);
+    rhs.resize(directRows_);
     // Per contact with rows, the factor of W's entries in its normal and
     // shear rows; W's columns of an open contact are zero too
-    std::vector<Eigen::Vector2d> rowFactor(nc, Eigen::Vector2d::Zero());
+    std::vector<Eigen::Vector2d>& rowFactor = directRowFactors_;
+    rowFactor.assign(nc, Eigen::Vector2d::Zero());
     for (std::size_t i = 0; i < nc; ++i)
     {
         const int r = rowOf_[i];
@@ -365,43 +388,37 @@ bool contactGaussSeidel::polish(bool fresh)
         rhs[r + 1] = sliding ? 0 : eq[i].rhs[1] - free_[i][1];
         t.emplace_back(r + 1, r, sliding ? -eq[i].friction : 0.0);
     }
-    for (const bodyBlock& bb : blocks_)
+    for (const bodyBlock& bb : blocks_) addBlockEntries(bb);
+    directMatrix_.resize(directRows_, directRows_);
+    directMatrix_.setFromTriplets(t.begin(), t.end());
+}
+
+
+void contactGaussSeidel::addBlockEntries(const bodyBlock& bb)
+{
+    const std::vector<Eigen::Vector2d>& rowFactor = directRowFactors_;
+    const std::size_t nb = bb.contacts.size();
+    for (std::size_t a = 0; a < nb; ++a)
     {
-        const std::size_t nb = bb.contacts.size();
-        for (std::size_t a = 0; a < nb; ++a)
+        const std::size_t i = std::size_t(bb.contacts[a]);
+        const int r = rowOf_[i];
+        if (r < 0) continue;
+        for (std::size_t b = 0; b < nb; ++b)
         {
-            const std::size_t i = std::size_t(bb.contacts[a]);
-            const int r = rowOf_[i];
-            if (r < 0) continue;
-            for (std::size_t b = 0; b < nb; ++b)
+            const std::size_t j = std::size_t(bb.contacts[b]);
+            const int col = rowOf_[j];
+            if (col < 0) continue;
+            const double column = rowFactor[j][0];
+            for (int cb = 0; cb < 2; ++cb)
             {
-                const std::size_t j = std::size_t(bb.contacts[b]);
-                const int col = rowOf_[j];
-                if (col < 0) continue;
-                const double column = rowFactor[j][0];
-                for (int cb = 0; cb < 2; ++cb)
+                for (int ra = 0; ra < 2; ++ra)
                 {
-                    for (int ra = 0; ra < 2; ++ra)
-                    {
-                        t.emplace_back(r + ra, col + cb, rowFactor[i][ra]*column
-                            *bb.W(long(2*a) + ra, long(2*b) + cb));
-                    }
+                    directTriplets_.emplace_back(r + ra, col + cb, rowFactor[i][ra]*column
+                        *bb.W(long(2*a) + ra, long(2*b) + cb));
                 }
             }
         }
     }
-    Eigen::VectorXd lambda = rhs;
-    directMatrix_.resize(m, m);
-    directMatrix_.setFromTriplets(t.begin(), t.end());
-    if (!solveDirect(directMatrix_, lambda)) return false;
-
-    for (std::size_t i = 0; i < nc; ++i)
-    {
-        if (rowOf_[i] < 0 || !isClosed(eq[i].state)) continue;
-        c.setForces(i, lambda.segment<2>(rowOf_[i]));
-        setLambda(i, lambda.segment<2>(rowOf_[i]));
-    }
-    return true;
 }
 
 
