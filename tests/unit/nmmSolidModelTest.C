@@ -155,6 +155,45 @@ TEST(nmmSolidModel, freeFallIsExactWithBothSchemes)
 }
 
 
+TEST(nmmSolidModel, thetaFreeFallLagsByItsClosedForm)
+{
+    // Dd = dt (theta V1 + (1 - theta) V0) with V1 = V0 - g dt: after n
+    // steps the velocity is exact and the fall is g (t^2/2 + (theta - 1/2)
+    // t dt), first order in dt unless theta is 1/2
+    for (const double theta : {0.75, 1.0})
+    {
+        const testCase c
+        (
+            "a { material rock; polygon ((0 0) (1 0) (1 1) (0 1)); }",
+            "all { type block; block a; }",
+            "type structured; cellSize 0.25;",
+            "analysis dynamic; timeScheme { type DDA; velocityRatio 1; theta "
+                + std::to_string(theta) + "; }\n",
+            "all { type tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }",
+            "(0 -9.81 0)"
+        );
+        auto m = c.model();
+        const double dt = 0.01;
+        for (int n = 0; n < 20; ++n)
+        {
+            m->solveStep(dt);
+            m->acceptStep();
+        }
+        const double t = m->time();
+        const auto fall = [t, dt, theta](const Eigen::Vector2d&)
+        {
+            return Eigen::Vector2d(0, -9.81*(t*t/2 + (theta - 0.5)*t*dt));
+        };
+        EXPECT_LT(patchError(*m, fall), 1e-10) << theta;
+        const Eigen::VectorXd& V = m->state().V;
+        for (long i = 0; i < V.size(); i += 2)
+        {
+            EXPECT_NEAR(V[i + 1], -9.81*t, 1e-10) << theta;
+        }
+    }
+}
+
+
 TEST(nmmSolidModel, spinningBlockKeepsItsArea)
 {
     const testCase c
@@ -278,6 +317,42 @@ TEST(nmmSolidModel, deformationVelocityDroppedKeepsTheMomenta)
     const auto rigidDropped = ringingBlock(dropped, 0);
     EXPECT_LT((rigidDropped->state().V - rigidKept->state().V).norm(),
               1e-10*rigidKept->state().V.norm());
+}
+
+
+TEST(nmmSolidModel, thetaDampsWhatTheStepDoesNotResolve)
+{
+    // A block stretching at a uniform rate, with a step far longer than
+    // its elastic periods (w dt of 200 or more for E 1000, rho 2000):
+    // each mode keeps -(1 - theta)/theta of its velocity, to
+    // O(1/(w dt)^2). Shi's theta 1/2 flips it whole, 3/4 keeps a third,
+    // 1 (implicit Euler) drops it
+    for (const double theta : {0.5, 0.75, 1.0})
+    {
+        const testCase c
+        (
+            "a { material rock; polygon ((-0.5 -0.3) (0.5 -0.3) (0.5 0.3) (-0.5 0.3)); }",
+            "all { type block; block a; }",
+            "type structured; cellSize 0.1;",
+            "analysis dynamic; timeScheme { type DDA; velocityRatio 1; theta "
+                + std::to_string(theta) + "; }\n",
+            "all { type tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }"
+        );
+        auto m = c.model();
+        nm::solidState s = m->saveState();
+        const auto& pc = m->elements();
+        for (std::size_t u = 0; u < pc.unknownPatches().size(); ++u)
+        {
+            const Eigen::Vector2d x = m->cover().nodes()[pc.patches()[pc.unknownPatches()[u]].node];
+            s.V.segment<2>(2*long(u)) = Eigen::Vector2d(0.5*x.x(), -0.2*x.y());
+        }
+        const Eigen::VectorXd V0 = s.V;
+        m->restoreState(s);
+        m->solveStep(100);
+        m->acceptStep();
+        const Eigen::VectorXd expected = -(1 - theta)/theta*V0;
+        EXPECT_LT((m->state().V - expected).norm(), 1e-3*V0.norm()) << theta;
+    }
 }
 
 
