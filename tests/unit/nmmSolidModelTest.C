@@ -127,27 +127,39 @@ TEST(nmmSolidModel, patchTestWithSlivers)
 }
 
 
+namespace
+{
+
+//- A free block under gravity after 20 steps of dt with the scheme
+std::unique_ptr<nmmSolidModel> fallenBlock(const std::string& scheme, double dt)
+{
+    const testCase c
+    (
+        "a { material rock; polygon ((0 0) (1 0) (1 1) (0 1)); }",
+        "all { type block; block a; }",
+        "type structured; cellSize 0.25;",
+        "analysis dynamic; " + scheme + "\n",
+        "all { type tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }",
+        "(0 -9.81 0)"
+    );
+    auto m = c.model();
+    for (int n = 0; n < 20; ++n)
+    {
+        m->solveStep(dt);
+        m->acceptStep();
+    }
+    return m;
+}
+
+} // End anonymous namespace
+
+
 TEST(nmmSolidModel, freeFallIsExactWithBothSchemes)
 {
     for (const std::string scheme :
          {"timeScheme { type DDA; velocityRatio 1; }", "timeScheme { type Newmark; }"})
     {
-        const testCase c
-        (
-            "a { material rock; polygon ((0 0) (1 0) (1 1) (0 1)); }",
-            "all { type block; block a; }",
-            "type structured; cellSize 0.25;",
-            "analysis dynamic; " + scheme + "\n",
-            "all { type tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }",
-            "(0 -9.81 0)"
-        );
-        auto m = c.model();
-        const double dt = 0.01;
-        for (int n = 0; n < 20; ++n)
-        {
-            m->solveStep(dt);
-            m->acceptStep();
-        }
+        const auto m = fallenBlock(scheme, 0.01);
         const double t = m->time();
         const auto fall = [t](const Eigen::Vector2d&) { return Eigen::Vector2d(0, -9.81*t*t/2); };
         EXPECT_LT(patchError(*m, fall), 1e-10) << scheme;
@@ -162,23 +174,11 @@ TEST(nmmSolidModel, thetaFreeFallLagsByItsClosedForm)
     // t dt), first order in dt unless theta is 1/2
     for (const double theta : {0.75, 1.0})
     {
-        const testCase c
-        (
-            "a { material rock; polygon ((0 0) (1 0) (1 1) (0 1)); }",
-            "all { type block; block a; }",
-            "type structured; cellSize 0.25;",
-            "analysis dynamic; timeScheme { type DDA; velocityRatio 1; theta "
-                + std::to_string(theta) + "; }\n",
-            "all { type tractionDisplacement; traction uniform (0 0 0); pressure uniform 0; }",
-            "(0 -9.81 0)"
-        );
-        auto m = c.model();
         const double dt = 0.01;
-        for (int n = 0; n < 20; ++n)
-        {
-            m->solveStep(dt);
-            m->acceptStep();
-        }
+        const auto m = fallenBlock
+        (
+            "timeScheme { type DDA; velocityRatio 1; theta " + std::to_string(theta) + "; }", dt
+        );
         const double t = m->time();
         const auto fall = [t, dt, theta](const Eigen::Vector2d&)
         {

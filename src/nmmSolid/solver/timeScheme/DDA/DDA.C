@@ -25,8 +25,8 @@ const keywordTable& DDA::keywords()
             .defaultValue(1).range(0, 1);
         t.scalar("theta", "weight of the end velocity in the step's"
             " displacement: 1/2 Shi's DDA, 1 implicit Euler (a mode far"
-            " faster than the step loses |1 - 1/theta| of its velocity a"
-            " step)", "").defaultValue(0.5).range(0.5, 1);
+            " faster than the step keeps (1 - theta)/theta of its velocity"
+            " a step, reversed)", "").defaultValue(0.5).range(0.5, 1);
         return t;
     }();
     return table;
@@ -57,7 +57,7 @@ void DDA::update
     const Eigen::VectorXd& dd,
     double dt,
     const Eigen::VectorXd& V0,
-    const Eigen::VectorXd& A0,
+    const Eigen::VectorXd&,
     Eigen::VectorXd& V1,
     Eigen::VectorXd& A1
 ) const
