@@ -94,20 +94,27 @@ void updatedLagrangian::correctRotations
     const auto& pc = space_.elements();
     const auto& els = pc.elements();
 
-    // Block centroids and patch rotations at the start of the step
+    // Block centroids and patch rotations at the start of the step, and
+    // the blocks' mean velocities at its end (momentum over mass: one
+    // material a block)
     std::vector<Eigen::Vector2d> moment(nBlocks_, Eigen::Vector2d::Zero());
+    std::vector<Eigen::Vector2d> momentum(nBlocks_, Eigen::Vector2d::Zero());
     std::vector<double> blockArea(nBlocks_, 0.0);
     std::vector<double> patchW(pc.nPatches(), 0.0), patchArea(pc.nPatches(), 0.0);
+    const Eigen::Matrix2Xd patchV =
+        rotateVelocity ? space_.patchDisplacements(s.V) : Eigen::Matrix2Xd();
     for (std::size_t e = 0; e < els.size(); ++e)
     {
         const auto T = space_.currentTriangle(label(e), patchD0);
         const double a = els[e].moments.area;
         moment[els[e].block] += T*els[e].moments.w;
         blockArea[els[e].block] += a;
-        for (const label p : els[e].patches)
+        for (int k = 0; k < 3; ++k)
         {
+            const label p = els[e].patches[k];
             patchW[p] += a*rotations[e];
             patchArea[p] += a;
+            if (rotateVelocity) momentum[els[e].block] += els[e].moments.w[k]*patchV.col(p);
         }
     }
 
@@ -123,7 +130,14 @@ void updatedLagrangian::correctRotations
         const Eigen::Vector2d x = space_.cover().nodes()[pc.patches()[p].node] + patchD0.col(p);
         const Eigen::Vector2d c = moment[b]/blockArea[b];
         s.D.segment<2>(2*u) += (R - Eigen::Matrix2d::Identity() - W)*(x - c);
-        if (rotateVelocity) s.V.segment<2>(2*u) = R*s.V.segment<2>(2*u);
+        if (rotateVelocity)
+        {
+            // Only the velocity relative to the block's centroid turns with
+            // the block: turning its translation too would swing a
+            // spinning block's fall round with its spin
+            const Eigen::Vector2d v = momentum[b]/blockArea[b];
+            s.V.segment<2>(2*u) = v + R*(s.V.segment<2>(2*u) - v);
+        }
     }
 }
 
