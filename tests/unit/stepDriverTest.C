@@ -8,6 +8,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 using nmm::solidState;
@@ -220,4 +221,35 @@ TEST(stepDriver, aRestoredHistoryTakesTheStepsOfTheRunItContinues)
         stepDriver fresh(solid, settings(), 0.2, true);
         EXPECT_NE(fresh.advance(10).deltaT, uninterrupted) << "longest step " << longest;
     }
+}
+
+
+TEST(stepDriver, afterACutTheStepsGrowToACeilingThatRisesSlowly)
+{
+    // Converges up to 0.35: the first step, 0.4, is cut to 0.2, and the
+    // steps after it grow by growth^(1/8) a step from there, rather than
+    // straight back to 0.4 by growth
+    fakeSolid solid(0.35);
+    stepDriver driver(solid, settings(), 0.4, true);
+    const double rise = std::pow(2.0, 1.0/8);
+    EXPECT_EQ(driver.advance(10).deltaT, 0.2);
+    EXPECT_EQ(driver.advance(10).deltaT, 0.2);
+    double expected = 0.2;
+    for (int k = 1; k <= 6; ++k)
+    {
+        expected *= rise;
+        EXPECT_DOUBLE_EQ(driver.advance(10).deltaT, expected) << k;
+    }
+    EXPECT_EQ(solid.attempts.size(), 9u);
+
+    // The next try, 0.2 rise^7 = 0.366, fails and is halved; the ceiling
+    // is then the step before it, the last that settled
+    EXPECT_DOUBLE_EQ(driver.advance(10).deltaT, 0.5*expected*rise);
+    EXPECT_DOUBLE_EQ(driver.controller().history().ceiling, expected);
+
+    // With nothing failing it rises to maxDeltaT and lapses
+    solid.longest = 10;
+    for (int i = 0; i < 30; ++i) driver.advance(10);
+    EXPECT_EQ(driver.advance(10).deltaT, 1);
+    EXPECT_EQ(driver.controller().history().ceiling, 0);
 }

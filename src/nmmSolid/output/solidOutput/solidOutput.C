@@ -469,6 +469,7 @@ void solidOutput::writeState
         out.write("stepControl/lastDisplacementRatio",
             std::vector<double>{steps->displacementRatio});
         out.write("stepControl/lastCut", std::vector<double>{double(steps->cut)});
+        out.write("stepControl/ceiling", std::vector<double>{steps->ceiling});
     }
     out.commit();
 }
@@ -489,7 +490,9 @@ std::optional<stepHistory> solidOutput::readStepHistory(const std::filesystem::p
         }
         return v[0];
     };
-    return stepHistory{one("lastDeltaT"), one("lastDisplacementRatio"), one("lastCut") != 0};
+    // States written before the ceiling was kept have none
+    const double ceiling = in.exists("stepControl/ceiling") ? one("ceiling") : 0.0;
+    return stepHistory{one("lastDeltaT"), one("lastDisplacementRatio"), one("lastCut") != 0, ceiling};
 }
 
 

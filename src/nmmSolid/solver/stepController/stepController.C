@@ -1,6 +1,7 @@
 #include "nmmSolid/solver/stepController/stepController.H"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace nmm
@@ -71,7 +72,8 @@ double stepController::next(double upperBound)
     {
         factor = std::min(factor, 0.9*settings_.maxDisplacementRatio/last_.displacementRatio);
     }
-    const double grown = last_.last*factor;
+    double grown = last_.last*factor;
+    if (last_.ceiling > 0) grown = std::min(grown, last_.ceiling);
     const double cap = adjustable_ ? settings_.maxDeltaT : nominal_;
     return std::min({grown, cap, upperBound});
 }
@@ -88,7 +90,18 @@ std::optional<double> stepController::cut(double dt)
 
 void stepController::accepted(double dt, double displacementRatio)
 {
-    last_ = {dt, displacementRatio, cutThisStep_};
+    double ceiling = 0;
+    if (adjustable_ && cutThisStep_)
+    {
+        // The longest step that settled before this one
+        ceiling = std::max(last_.last, dt);
+    }
+    else if (adjustable_ && last_.ceiling > 0)
+    {
+        ceiling = last_.ceiling*std::pow(settings_.growth, ceilingGrowthPower);
+        if (ceiling >= settings_.maxDeltaT) ceiling = 0;
+    }
+    last_ = {dt, displacementRatio, cutThisStep_, ceiling};
 }
 
 } // End namespace nmm
