@@ -100,6 +100,8 @@ TEST(solutionControls, staticWithDefaults)
     EXPECT_EQ(s.minDeltaT, 1e-12);
     EXPECT_EQ(s.growth, 1.3);
     EXPECT_EQ(s.cutBack, 0.3);
+    // No regrowth: as growth, no ceiling after a cut
+    EXPECT_EQ(s.regrowth, 1.3);
     EXPECT_EQ(penaltyOf(c).maxOpenCloseIterations, 8);
     EXPECT_TRUE(c.largeDisplacement());
     EXPECT_TRUE(c.linearSolverDict().empty());
@@ -214,7 +216,8 @@ TEST(solutionControlsErrors, unknownKeywordsSuggest)
 TEST(solutionControlsErrors, stepControlRanges)
 {
     for (const char* bad : {"maxDisplacementRatio 0", "maxDisplacementRatio 1",
-        "maxDeltaT -1", "minDeltaT 0", "growth 0.9", "cutBack 1", "cutBack 0"})
+        "maxDeltaT -1", "minDeltaT 0", "growth 0.9", "cutBack 1", "cutBack 0",
+        "regrowth 0.99"})
     {
         const std::string text = std::string("analysis static;\n\nstepControl { ")
             + bad + "; }";

@@ -86,6 +86,7 @@ nmm::stepControlSettings settings()
     s.minDeltaT = 1e-3;
     s.growth = 2;
     s.cutBack = 0.5;
+    s.regrowth = s.growth;
     return s;
 }
 
@@ -226,12 +227,15 @@ TEST(stepDriver, aRestoredHistoryTakesTheStepsOfTheRunItContinues)
 
 TEST(stepDriver, afterACutTheStepsGrowToACeilingThatRisesSlowly)
 {
-    // Converges up to 0.35: the first step, 0.4, is cut to 0.2, and the
-    // steps after it grow by growth^(1/8) a step from there, rather than
-    // straight back to 0.4 by growth
+    // regrowth below growth. Converges up to 0.35: the first step, 0.4,
+    // is cut to 0.2, and the steps after it grow by regrowth a step from
+    // there, rather than straight back to 0.4 by growth (as
+    // afterACutGrowsBackToTheNominalStepWhenNotAdjustable's do)
     fakeSolid solid(0.35);
-    stepDriver driver(solid, settings(), 0.4, true);
+    auto s = settings();
     const double rise = std::pow(2.0, 1.0/8);
+    s.regrowth = rise;
+    stepDriver driver(solid, s, 0.4, true);
     EXPECT_EQ(driver.advance(10).deltaT, 0.2);
     EXPECT_EQ(driver.advance(10).deltaT, 0.2);
     double expected = 0.2;

@@ -1,7 +1,6 @@
 #include "nmmSolid/solver/stepController/stepController.H"
 
 #include <algorithm>
-#include <cmath>
 #include <sstream>
 
 namespace nmm
@@ -21,6 +20,9 @@ const keywordTable& stepController::keywords()
             .defaultValue(1.3).atLeast(1);
         t.scalar("cutBack", "factor on a step that is cut and redone", "")
             .defaultValue(0.3).above(0).below(1);
+        t.scalar("regrowth", "after a cut, the steps grow back to the last"
+            " step that settled before it and beyond it by this factor a step",
+            "").atLeast(1).notes("default: growth (no ceiling)");
         return t;
     }();
     return table;
@@ -37,6 +39,7 @@ stepControlSettings stepController::read(const dictionary& d)
     s.minDeltaT = k.get<double>(d, "minDeltaT");
     s.growth = k.get<double>(d, "growth");
     s.cutBack = k.get<double>(d, "cutBack");
+    s.regrowth = d.findEntry("regrowth") ? k.get<double>(d, "regrowth") : s.growth;
     if (!(s.minDeltaT < s.maxDeltaT))
     {
         const entry* e = d.findEntry("minDeltaT");
@@ -91,14 +94,15 @@ std::optional<double> stepController::cut(double dt)
 void stepController::accepted(double dt, double displacementRatio)
 {
     double ceiling = 0;
-    if (adjustable_ && cutThisStep_)
+    const bool ceilinged = adjustable_ && settings_.regrowth < settings_.growth;
+    if (ceilinged && cutThisStep_)
     {
         // The longest step that settled before this one
         ceiling = std::max(last_.last, dt);
     }
-    else if (adjustable_ && last_.ceiling > 0)
+    else if (ceilinged && last_.ceiling > 0)
     {
-        ceiling = last_.ceiling*std::pow(settings_.growth, ceilingGrowthPower);
+        ceiling = last_.ceiling*settings_.regrowth;
         if (ceiling >= settings_.maxDeltaT) ceiling = 0;
     }
     last_ = {dt, displacementRatio, cutThisStep_, ceiling};
