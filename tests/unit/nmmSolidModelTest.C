@@ -490,6 +490,27 @@ TEST(nmmSolidModel, restartReproducesAnUninterruptedRun)
 }
 
 
+TEST(nmmSolidModel, restartStateKeepsTheStepHistory)
+{
+    // What the step controller needs to take the uninterrupted run's
+    // steps, the ceiling after a cut included, read back as written
+    const auto m = fallenBlock("timeScheme { type DDA; velocityRatio 1; }", 0.01);
+    const tempDir dir;
+    const nm::stepHistory written{0.0125, 0.0031, true, 0.0075};
+    nm::solidOutput::writeState(dir.path, *m, &written);
+    const auto read = nm::solidOutput::readStepHistory(dir.path);
+    ASSERT_TRUE(read.has_value());
+    EXPECT_EQ(read->last, written.last);
+    EXPECT_EQ(read->displacementRatio, written.displacementRatio);
+    EXPECT_EQ(read->cut, written.cut);
+    EXPECT_EQ(read->ceiling, written.ceiling);
+    // A state written without the step history has none
+    const tempDir bare;
+    nm::solidOutput::writeState(bare.path, *m);
+    EXPECT_FALSE(nm::solidOutput::readStepHistory(bare.path).has_value());
+}
+
+
 TEST(nmmSolidModel, floatingBlockIsNamed)
 {
     const testCase c

@@ -251,6 +251,13 @@ TEST(stepDriver, afterACutTheStepsGrowToACeilingThatRisesSlowly)
     EXPECT_DOUBLE_EQ(driver.advance(10).deltaT, 0.5*expected*rise);
     EXPECT_DOUBLE_EQ(driver.controller().history().ceiling, expected);
 
+    // A restart goes on under the same ceiling
+    stepDriver restarted(solid, s, 0.4, true);
+    restarted.restore(driver.controller().history());
+    const double next = restarted.advance(10).deltaT;
+    EXPECT_EQ(next, driver.advance(10).deltaT);
+    EXPECT_DOUBLE_EQ(next, 0.5*expected*rise);
+
     // With nothing failing it rises to maxDeltaT and lapses
     solid.longest = 10;
     for (int i = 0; i < 30; ++i) driver.advance(10);
