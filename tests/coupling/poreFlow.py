@@ -20,6 +20,10 @@ binaries (Debian's openfoam package, v1912).
             within 2% (the inlet and outlet planes are set at uniform
             pressure, which a periodic array has only approximately); the
             force balance as for the slot, a quarter of it on each disc
+  repeatable  one pore space meshed three times (separate processes, so
+            at other memory addresses): the same mesh, byte for byte
+            (points, faces, owner, neighbour, boundary), and the same
+            cell count. Twelve irregular grains, some 4,000 cells
   errors    broken input: an unknown keyword ("did you mean"), a missing
             physics keyword, a box that the blocks close, a time that was
             not written; and nmmSeepageFoam's nmmSeepageDict (an unknown
@@ -31,10 +35,11 @@ binaries (Debian's openfoam package, v1912).
   plot      not a test: poreFlow.png beside that table, |error| against
             run time per case, from the table (workDir: the .md file)
 
-Usage: poreFlow.py <binDir> <projectDir> <workDir> [slot|discs|errors|convergence]
+Usage: poreFlow.py <binDir> <projectDir> <workDir> [slot|discs|repeatable|errors|convergence]
 """
 import math
 import os
+import random
 import re
 import shutil
 import subprocess
@@ -191,6 +196,42 @@ def discs():
               % (c, 100*err))
 
 
+def grain(cx, cy, r, rng, n=24):
+    """An irregular star-shaped grain: radii between 0.7 r and r"""
+    return [(cx + r*rng.uniform(0.7, 1)*math.cos(2*math.pi*i/n),
+             cy + r*rng.uniform(0.7, 1)*math.sin(2*math.pi*i/n)) for i in range(n)]
+
+
+def repeatable():
+    """The mesh must not depend on where the mesher's objects lie in memory:
+    a coupled run restarted, or run again, must meet the same pore space"""
+    rng = random.Random(20)
+    l = 1e-3
+    blocks = [grain((i + 0.5)*l, (j + 0.5)*l, 0.4*l, rng) for i in range(4) for j in range(3)]
+    case = make_case("repeatable", blocks,
+                     fluid(box="{ min (0 0); max (%g %g); }" % (4*l, 3*l), maxCellSize=l/10,
+                           cellsAcrossThroat=4, coverCell=l/4))
+    mesh = os.path.join(case, "poreFlow/0/constant/polyMesh")
+    files = ("points", "faces", "owner", "neighbour", "boundary")
+    first = None
+    for i in range(3):
+        out = run(["nmmPoreFlow", "-noRun"], case, "nmmPoreFlow.%d" % i).stdout
+        cells = int(re.search(r"cells\s+(\d+)", out).group(1))
+        content = []
+        for name in files:
+            with open(os.path.join(mesh, name)) as f:
+                content.append(f.read())
+        if first is None:
+            first = (cells, content)
+            print("repeatable: %d cells" % cells)
+            continue
+        check(cells == first[0], "repeatable: run %d has as many cells (%d, first %d)"
+              % (i + 1, cells, first[0]))
+        same = [n for n, a, b in zip(files, content, first[1]) if a == b]
+        check(len(same) == len(files), "repeatable: run %d's mesh is the first's (the same: %s)"
+              % (i + 1, " ".join(same) or "none"))
+
+
 def errors():
     L, h, t = 4e-3, 1e-3, 1e-3
     blocks = [[(0, -t), (L, -t), (L, 0), (0, 0)], [(0, h), (L, h), (L, h + t), (0, h + t)]]
@@ -314,7 +355,8 @@ def main():
     if WHAT == "convergence":
         convergence()
         return
-    for name, test in (("slot", slot), ("discs", discs), ("errors", errors)):
+    for name, test in (("slot", slot), ("discs", discs), ("repeatable", repeatable),
+                       ("errors", errors)):
         if WHAT in ("all", name):
             test()
     if failures:

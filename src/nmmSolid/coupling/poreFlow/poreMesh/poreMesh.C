@@ -6,7 +6,9 @@
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Delaunay_mesh_vertex_base_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
-#include <CGAL/lloyd_optimize_mesh_2.h>
+#include <CGAL/Constrained_voronoi_diagram_2.h>
+#include <CGAL/Mesh_2/Lloyd_move_2.h>
+#include <CGAL/Mesh_2/Mesh_sizing_field.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_2/Face_badness.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
@@ -49,6 +51,26 @@ using sizeTds = CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_
 using sizeCdt = CGAL::Constrained_Delaunay_triangulation_2<K, sizeTds, CGAL::Exact_predicates_tag>;
 
 Eigen::Vector2d vec(const point& p) { return {p.x(), p.y()}; }
+
+
+//- The kept triangles, numbered in the triangulation's own order: the
+//  addresses of its handles vary from run to run, and the cells' order
+//  (and which of two coincident points is kept) must not follow them
+class keptFaces
+{
+    std::map<meshCdt::Face_handle, int> index_;
+
+public:
+    std::vector<meshCdt::Face_handle> faces;
+
+    void add(meshCdt::Face_handle f)
+    {
+        index_.emplace(f, int(faces.size()));
+        faces.push_back(f);
+    }
+    bool count(meshCdt::Face_handle f) const { return index_.count(f) > 0; }
+    std::size_t size() const { return faces.size(); }
+};
 
 
 //- Refinement criteria of Delaunay_mesher_2 (the MeshingCriteria_2
@@ -382,7 +404,7 @@ int cellsCrossed(const meshCdt& cdt, const Eigen::Vector2d& p, const Eigen::Vect
 }
 
 //- The kept triangles as the cells
-void triangleCells(const meshCdt& cdt, const std::map<meshCdt::Face_handle, int>& cellOf,
+void triangleCells(const meshCdt& cdt, const keptFaces& cellOf,
     const wallSearch& edges, poreMesh& m)
 {
     std::map<meshCdt::Vertex_handle, int> pointOf;
@@ -392,13 +414,14 @@ void triangleCells(const meshCdt& cdt, const std::map<meshCdt::Face_handle, int>
         if (added) m.points.push_back(vec(v->point()));
         return it->second;
     };
-    m.cells.assign(cellOf.size(), {});
-    for (const auto& [f, c] : cellOf)
+    for (const auto& f : cellOf.faces)
     {
-        m.cells[std::size_t(c)] = {index(f->vertex(0)), index(f->vertex(1)), index(f->vertex(2))};
+        m.cells.push_back({index(f->vertex(0)), index(f->vertex(1)), index(f->vertex(2))});
     }
-    for (const auto& [f, c] : cellOf)
+    for (std::size_t ci = 0; ci < cellOf.size(); ++ci)
     {
+        const auto f = cellOf.faces[ci];
+        const int c = int(ci);
         for (int i = 0; i < 3; ++i)
         {
             if (cellOf.count(f->neighbor(i))) continue;
@@ -427,7 +450,7 @@ double signedArea(const poreMesh& m, const std::vector<int>& cell)
 //  circumcentre lies beyond one of its boundary edges (a wall would then
 //  cut the dual cell)
 Eigen::Vector2d dualPoint(const meshCdt& cdt, meshCdt::Face_handle f,
-    const std::map<meshCdt::Face_handle, int>& cellOf)
+    const keptFaces& cellOf)
 {
     const auto t = cdt.triangle(f);
     const Eigen::Vector2d cc = vec(CGAL::circumcenter(t));
@@ -453,7 +476,7 @@ Eigen::Vector2d dualPoint(const meshCdt& cdt, meshCdt::Face_handle f,
 void mergeCoincident
 (
     const meshCdt& cdt,
-    const std::map<meshCdt::Face_handle, int>& cellOf,
+    const keptFaces& cellOf,
     const std::map<meshCdt::Face_handle, int>& centre,
     const std::map<std::pair<meshCdt::Vertex_handle, meshCdt::Vertex_handle>, int>& midpoint,
     poreMesh& d
@@ -465,8 +488,9 @@ void mergeCoincident
     {
         return parent[std::size_t(i)] == i ? i : parent[std::size_t(i)] = root(parent[std::size_t(i)]);
     };
-    for (const auto& [f, c] : centre)
+    for (const auto& f : cellOf.faces)
     {
+        const int c = centre.at(f);
         // Faces shorter than this carry nothing but rounding
         const double tol = 1e-3*std::sqrt(cdt.triangle(f).area());
         for (int i = 0; i < 3; ++i)
@@ -521,7 +545,7 @@ class dualBuilder
     using faceHandle = meshCdt::Face_handle;
 
     const meshCdt& cdt_;
-    const std::map<faceHandle, int>& cellOf_;
+    const keptFaces& cellOf_;
     const wallSearch& edges_;
     std::map<faceHandle, int> centre_;
     std::map<std::pair<vertex, vertex>, int> midpoint_;
@@ -595,17 +619,17 @@ class dualBuilder
 public:
     poreMesh d;
 
-    dualBuilder(const meshCdt& cdt, const std::map<faceHandle, int>& cellOf, const wallSearch& edges)
+    dualBuilder(const meshCdt& cdt, const keptFaces& cellOf, const wallSearch& edges)
     :
         cdt_(cdt), cellOf_(cellOf), edges_(edges)
     {
-        for (const auto& fc : cellOf_) centre_[fc.first] = add(dualPoint(cdt_, fc.first, cellOf_));
+        for (const auto& f : cellOf_.faces) centre_[f] = add(dualPoint(cdt_, f, cellOf_));
         std::set<vertex> done;
-        for (const auto& fc : cellOf_)
+        for (const auto& f : cellOf_.faces)
         {
             for (int k = 0; k < 3; ++k)
             {
-                if (done.insert(fc.first->vertex(k)).second) cellsOf(fc.first->vertex(k));
+                if (done.insert(f->vertex(k)).second) cellsOf(f->vertex(k));
             }
         }
         mergeCoincident(cdt_, cellOf_, centre_, midpoint_, d);
@@ -615,7 +639,7 @@ public:
 
 //- The cells as the dual of the triangles (see the Description); false,
 //  leaving m as it was, if a dual cell would not be a valid polygon
-bool makeDual(const meshCdt& cdt, const std::map<meshCdt::Face_handle, int>& cellOf,
+bool makeDual(const meshCdt& cdt, const keptFaces& cellOf,
     const wallSearch& edges, poreMesh& m)
 {
     dualBuilder b(cdt, cellOf, edges);
@@ -633,6 +657,75 @@ bool makeDual(const meshCdt& cdt, const std::map<meshCdt::Face_handle, int>& cel
 }
 
 
+double smallestSqCircumradius(const meshCdt& cdt, meshCdt::Vertex_handle v)
+{
+    double r = std::numeric_limits<double>::infinity();
+    auto f = cdt.incident_faces(v), end = f;
+    do
+    {
+        if (cdt.is_infinite(f)) continue;
+        r = std::min(r, CGAL::squared_radius(f->vertex(0)->point(), f->vertex(1)->point(),
+            f->vertex(2)->point()));
+    } while (++f != end);
+    return r;
+}
+
+
+//- The mean square root of the largest hundredth of the moves (squared,
+//  over the local size squared) of the n vertices free to move
+double largestMoves(std::vector<double> ratios, std::size_t n)
+{
+    const std::size_t k = std::max<std::size_t>(1, n/100);
+    ratios.resize(std::max(ratios.size(), k), 0.0);
+    std::partial_sort(ratios.begin(), ratios.begin() + std::ptrdiff_t(k), ratios.end(), std::greater<>());
+    double sum = 0;
+    for (std::size_t i = 0; i < k; ++i) sum += std::sqrt(ratios[i]);
+    return sum/double(k);
+}
+
+
+//- Lloyd steps as CGAL's lloyd_optimize_mesh_2 takes them (its move to
+//  the centroid of the constrained Voronoi cell, weighted by its sizing
+//  field; its freeze and convergence bounds), but over the vertices in the
+//  triangulation's own order. CGAL 5.5 takes them in the order of their
+//  addresses, so one domain gave meshes that differ from run to run
+//  (CGAL issue 8719, fixed in 6.1)
+void lloydSteps(meshCdt& cdt, int iterations)
+{
+    // CGAL's defaults: a vertex moves if its move is at least sqrt(freeze)
+    // of its smallest circumradius; the steps end when the largest moves
+    // average below convergence of it
+    constexpr double freeze = 1e-3, convergence = 1e-3;
+    using sizingField = CGAL::Mesh_2::Mesh_sizing_field<meshCdt>;
+    const sizingField sizing(cdt);
+    const CGAL::Mesh_2::Lloyd_move_2<meshCdt, sizingField> lloyd;
+    for (int i = 0; i < iterations; ++i)
+    {
+        CGAL::Constrained_voronoi_diagram_2<meshCdt>(cdt).tag_faces_blind();
+        std::vector<std::pair<meshCdt::Vertex_handle, point>> moves;
+        std::vector<double> ratios;
+        std::size_t free = 0;
+        for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+        {
+            if (cdt.are_there_incident_constraints(v)) continue;
+            ++free;
+            const auto move = lloyd(v, cdt, sizing);
+            const double ratio = move.squared_length()/smallestSqCircumradius(cdt, v);
+            if (!(ratio >= freeze) || !std::isfinite(ratio)) continue;
+            moves.emplace_back(v, v->point() + move);
+            ratios.push_back(ratio);
+        }
+        if (moves.empty() || largestMoves(std::move(ratios), free) < convergence) return;
+        for (const auto& [v, p] : moves)
+        {
+            const double size = v->sizing_info();
+            cdt.remove(v);
+            cdt.insert(p)->set_sizing_info(size);
+        }
+    }
+}
+
+
 //- The domain's triangulation refined to the size field, then (Lloyd
 //  steps) smoothed and refined again
 void refine(meshCdt& cdt, const poreDomain& domain, const poreMesh::settings& s,
@@ -645,7 +738,7 @@ void refine(meshCdt& cdt, const poreDomain& domain, const poreMesh::settings& s,
     mesher.init(true);
     mesher.refine_mesh();
     if (s.lloydIterations == 0) return;
-    CGAL::lloyd_optimize_mesh_2(cdt, CGAL::parameters::max_iteration_number = s.lloydIterations);
+    lloydSteps(cdt, s.lloydIterations);
     // The moved vertices may encroach on boundary edges: refined again,
     // every boundary triangle has its circumcentre inside
     markDomain(cdt, mark);
@@ -657,7 +750,7 @@ void refine(meshCdt& cdt, const poreDomain& domain, const poreMesh::settings& s,
 
 //- Per kept triangle (of a region that joins the inlet to the outlet) its
 //  index; the regions dropped are counted in m
-std::map<meshCdt::Face_handle, int> keptTriangles(const meshCdt& cdt, const wallSearch& edges,
+keptFaces keptTriangles(const meshCdt& cdt, const wallSearch& edges,
     poreMesh& m)
 {
     const regions r = findRegions(cdt, edges);
@@ -673,11 +766,12 @@ std::map<meshCdt::Face_handle, int> keptTriangles(const meshCdt& cdt, const wall
             "(blocks in contact close it; in 2D a packing of touching grains has no "
             "open path: shrink opens the contacts)");
     }
-    std::map<meshCdt::Face_handle, int> cellOf;
-    for (const auto& [f, id] : r.of)
+    keptFaces cellOf;
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
     {
-        if (!keep[std::size_t(id)]) continue;
-        cellOf.emplace(f, int(cellOf.size()));
+        const auto id = r.of.find(f);
+        if (id == r.of.end() || !keep[std::size_t(id->second)]) continue;
+        cellOf.add(f);
         m.area += cdt.triangle(f).area();
     }
     return cellOf;
@@ -686,7 +780,7 @@ std::map<meshCdt::Face_handle, int> keptTriangles(const meshCdt& cdt, const wall
 
 //- The narrowest throat whose middle lies in the kept pore space
 poreMesh::throatInfo narrowestThroat(const sizeCdt& sizing, const meshCdt& cdt,
-    const std::map<meshCdt::Face_handle, int>& cellOf, bool dual)
+    const keptFaces& cellOf, bool dual)
 {
     std::vector<const widthInfo*> widths;
     for (auto f = sizing.finite_faces_begin(); f != sizing.finite_faces_end(); ++f)
