@@ -231,6 +231,13 @@ TEST(solutionControlsErrors, stepControlRanges)
     EXPECT_EQ(order.where().line, 3);
     EXPECT_EQ(order.keyword(), "minDeltaT");
     EXPECT_THAT(order.message(), HasSubstr("less than maxDeltaT"));
+    const IOerror faster = errorReading(
+        "analysis static;\nstepControl { growth 1.2;\n regrowth 1.5; }");
+    EXPECT_EQ(faster.where().line, 3);
+    EXPECT_EQ(faster.keyword(), "regrowth");
+    EXPECT_THAT(faster.message(), HasSubstr("must not exceed growth (1.2)"));
+    // As fast as growth: no ceiling, which is allowed
+    EXPECT_NO_THROW(read("analysis static;\nstepControl { growth 1.2; regrowth 1.2; }"));
 }
 
 

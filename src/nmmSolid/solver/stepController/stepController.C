@@ -22,7 +22,7 @@ const keywordTable& stepController::keywords()
             .defaultValue(0.3).above(0).below(1);
         t.scalar("regrowth", "after a cut, the steps grow back to the last"
             " step that settled before it and beyond it by this factor a step",
-            "").atLeast(1).notes("default: growth (no ceiling)");
+            "").atLeast(1).notes("at most growth; default: growth (no ceiling)");
         return t;
     }();
     return table;
@@ -48,6 +48,15 @@ stepControlSettings stepController::read(const dictionary& d)
         msg << "minDeltaT (" << s.minDeltaT << ") must be less than"
             " maxDeltaT (" << s.maxDeltaT << ")";
         throw e->error(msg.str());
+    }
+    // Above growth it would read as a ceiling and be none
+    if (s.regrowth > s.growth)
+    {
+        std::ostringstream msg;
+        msg << "regrowth (" << s.regrowth << ") must not exceed growth ("
+            << s.growth << "): the steps after a cut cannot grow back faster"
+            " than steps ever grow";
+        throw d.findEntry("regrowth")->error(msg.str());
     }
     return s;
 }
