@@ -45,7 +45,8 @@ import shutil
 import subprocess
 import sys
 
-BIN, PROJECT, WORK = sys.argv[1:4]
+# Absolute: the tools run in the cases, not where this was called
+BIN, PROJECT, WORK = (os.path.abspath(a) for a in sys.argv[1:4])
 WHAT = sys.argv[4] if len(sys.argv) > 4 else "all"
 
 HEADER = """FoamFile
