@@ -222,7 +222,18 @@ matrix66 stiffness
     double thickness
 )
 {
-    const matrix36 B = strainMatrix(T);
+    return stiffness(strainMatrix(T), area, D, thickness);
+}
+
+
+matrix66 stiffness
+(
+    const matrix36& B,
+    double area,
+    const Eigen::Matrix3d& D,
+    double thickness
+)
+{
     const matrix66 K = (area*thickness)*(B.transpose()*D*B);
     // Exactly symmetric, for the global Cholesky factorisation
     return 0.5*(K + K.transpose());

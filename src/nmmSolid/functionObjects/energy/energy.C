@@ -2,6 +2,8 @@
 
 #include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
 
+#include <Eigen/LU>
+
 namespace nmm
 {
 
@@ -53,13 +55,21 @@ double energy::strain() const
     const manifoldSpace& space = model_.space();
     const Eigen::Matrix2Xd patchD = model_.patchDisplacements();
     const auto& sigma = model_.state().sigma;
+    if (compliance_.size() != sigma.size())
+    {
+        compliance_.resize(sigma.size());
+        for (std::size_t e = 0; e < sigma.size(); ++e)
+        {
+            compliance_[e] = a.material(nmmAssembler::label(e)).D.inverse();
+        }
+    }
     double sum = 0;
     for (std::size_t e = 0; e < sigma.size(); ++e)
     {
         const auto label = nmmAssembler::label(e);
         const Eigen::Vector3d s = sigma[e].head<3>();
         const double area = space.currentArea(label, space.currentTriangle(label, patchD));
-        sum += 0.5*s.dot(a.material(label).D.ldlt().solve(s))*area;
+        sum += 0.5*s.dot(compliance_[e]*s)*area;
     }
     return sum*a.thickness();
 }

@@ -229,7 +229,7 @@ void nmmAssembler::addElements
         const auto T = space_.currentTriangle(e, patchD);
         const double area = space_.currentArea(e, T);
         const matrix36 B = manifoldElement::strainMatrix(T);
-        scatter(e, manifoldElement::stiffness(T, area, materials_[e].D, thickness_),
+        scatter(e, manifoldElement::stiffness(B, area, materials_[e].D, thickness_),
                 K.data() + elementFirst_[std::size_t(e)]);
         fe[std::size_t(e)] = -area*thickness_*B.transpose()*startStress(s, e);
     }
