@@ -58,17 +58,17 @@ Eigen::Vector2d vec(const point& p) { return {p.x(), p.y()}; }
 //  (and which of two coincident points is kept) must not follow them
 class keptFaces
 {
-    std::map<meshCdt::Face_handle, int> index_;
+    std::set<meshCdt::Face_handle> kept_;
 
 public:
     std::vector<meshCdt::Face_handle> faces;
 
     void add(meshCdt::Face_handle f)
     {
-        index_.emplace(f, int(faces.size()));
+        kept_.insert(f);
         faces.push_back(f);
     }
-    bool count(meshCdt::Face_handle f) const { return index_.count(f) > 0; }
+    bool count(meshCdt::Face_handle f) const { return kept_.count(f) > 0; }
     std::size_t size() const { return faces.size(); }
 };
 
