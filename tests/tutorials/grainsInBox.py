@@ -14,18 +14,26 @@ energy balance and the contact limits:
     step, and ends below 0;
   - contacts (postProcessing/contacts): the largest penetration of a
     closed contact in the last step is below 1e-6 m, about 1e-6 of the
-    box's width (the pile rests on its springs).
+    box's width (the pile rests on its springs);
+  - the law (VTK/contacts_*.vtp, every written frame): no sliding
+    contact carries tension. Mohr-Coulomb slides a contact without
+    cohesion only while it is pressed; a sliding contact pulled apart
+    would drag its friction along (before the contact-space solve
+    opened such contacts, two frames had one, at -26 and -18 N/m).
 Exit 1 when a check fails.
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 
+import base64
 import math
 import os
 import re
 import shutil
+import struct
 import subprocess
 import sys
+import xml.etree.ElementTree as ET
 from pathlib import Path
 
 
@@ -35,6 +43,34 @@ def table(path):
         if line and not line.startswith("#"):
             rows.append([float(x) for x in line.split()])
     return rows
+
+
+def pointArrays(vtp, names):
+    """The named point arrays of a .vtp written inline as base64 binary
+    (a UInt64 byte count, then the values), as tuples of numbers."""
+    root = ET.parse(vtp).getroot()
+    codes = {"Int32": "i", "Float64": "d"}
+    arrays = {}
+    for a in root.iter("DataArray"):
+        name = a.get("Name")
+        if name not in names:
+            continue
+        raw = base64.b64decode("".join(a.text.split()))
+        size = struct.unpack("<Q", raw[:8])[0]
+        code = codes[a.get("type")]
+        arrays[name] = struct.unpack("<%d%s" % (size//struct.calcsize(code), code), raw[8:8 + size])
+    return arrays
+
+
+def slidingInTension(case):
+    """(frame, normal force) of each sliding contact point pulled apart."""
+    found = []
+    for vtp in sorted((case/"VTK").glob("contacts_*.vtp")):
+        a = pointArrays(vtp, ("contactState", "normalForce"))
+        for state, fn in zip(a["contactState"], a["normalForce"]):
+            if state == 2 and fn < 0:
+                found.append((vtp.name, fn))
+    return found
 
 
 def main(argv):
@@ -87,6 +123,14 @@ def main(argv):
     print("largest penetration in the last step %.3g m (bound 1e-6 m)" % penetration)
     if not penetration < 1e-6:
         failures.append("largest penetration %.3g m in the last step" % penetration)
+
+    pulled = slidingInTension(case)
+    frames = len(list((case/"VTK").glob("contacts_*.vtp")))
+    print("sliding contacts in tension in %d frames: %d" % (frames, len(pulled)))
+    if not frames:
+        failures.append("no VTK/contacts_*.vtp written")
+    for name, fn in pulled:
+        failures.append("%s: a sliding contact in tension, %.3g N/m" % (name, fn))
 
     for f in failures:
         print("FAIL: " + f)
