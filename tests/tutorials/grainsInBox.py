@@ -55,8 +55,8 @@ def pointArrays(vtp, names):
         name = a.get("Name")
         if name not in names:
             continue
-        raw = base64.b64decode("".join(a.text.split()))
-        size = struct.unpack("<Q", raw[:8])[0]
+        raw = base64.b64decode("".join((a.text or "").split()))
+        size = struct.unpack("<Q", raw[:8])[0] if len(raw) >= 8 else 0
         code = codes[a.get("type")]
         arrays[name] = struct.unpack("<%d%s" % (size//struct.calcsize(code), code), raw[8:8 + size])
     return arrays
