@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-# Only the standard library is used (any python3 runs it).
+# Debian's /usr/bin/python3: the contact frames are read through
+# bin/tools/nmmVtk, which needs python3-vtk9 and numpy.
 """Runs tutorials/contact/grainsInBox with its Allrun from a scratch copy,
 to endTime (default the tutorial's), and checks the pile against the
 energy balance and the contact limits:
@@ -15,7 +16,7 @@ energy balance and the contact limits:
   - contacts (postProcessing/contacts): the largest penetration of a
     closed contact in the last step is below 1e-6 m, about 1e-6 of the
     box's width (the pile rests on its springs);
-  - the law (VTK/contacts_*.vtp, every written frame): no sliding
+  - the law (VTK/contacts.vtp.series, every written frame): no sliding
     contact carries tension. Mohr-Coulomb slides a contact without
     cohesion only while it is pressed; a sliding contact pulled apart
     would drag its friction along (before the contact-space solve
@@ -25,16 +26,16 @@ Exit 1 when a check fails.
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 
-import base64
 import math
 import os
 import re
 import shutil
-import struct
 import subprocess
 import sys
-import xml.etree.ElementTree as ET
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]/"bin"/"tools"))
+import nmmVtk  # noqa: E402
 
 
 def table(path):
@@ -45,31 +46,14 @@ def table(path):
     return rows
 
 
-def pointArrays(vtp, names):
-    """The named point arrays of a .vtp written inline as base64 binary
-    (a UInt64 byte count, then the values), as tuples of numbers."""
-    root = ET.parse(vtp).getroot()
-    codes = {"Int32": "i", "Float64": "d"}
-    arrays = {}
-    for a in root.iter("DataArray"):
-        name = a.get("Name")
-        if name not in names:
-            continue
-        raw = base64.b64decode("".join((a.text or "").split()))
-        size = struct.unpack("<Q", raw[:8])[0] if len(raw) >= 8 else 0
-        code = codes[a.get("type")]
-        arrays[name] = struct.unpack("<%d%s" % (size//struct.calcsize(code), code), raw[8:8 + size])
-    return arrays
-
-
-def slidingInTension(case):
+def slidingInTension(frames):
     """(frame, normal force) of each sliding contact point pulled apart."""
     found = []
-    for vtp in sorted((case/"VTK").glob("contacts_*.vtp")):
-        a = pointArrays(vtp, ("contactState", "normalForce"))
-        for state, fn in zip(a["contactState"], a["normalForce"]):
+    for _, path in frames:
+        c = nmmVtk.readContacts(path)
+        for state, fn in zip(c.data["contactState"], c.data["normalForce"]):
             if state == 2 and fn < 0:
-                found.append((vtp.name, fn))
+                found.append((path.name, fn))
     return found
 
 
@@ -124,11 +108,11 @@ def main(argv):
     if not penetration < 1e-6:
         failures.append("largest penetration %.3g m in the last step" % penetration)
 
-    pulled = slidingInTension(case)
-    frames = len(list((case/"VTK").glob("contacts_*.vtp")))
-    print("sliding contacts in tension in %d frames: %d" % (frames, len(pulled)))
+    frames = nmmVtk.readContactSeries(case)
+    pulled = slidingInTension(frames)
+    print("sliding contacts in tension in %d frames: %d" % (len(frames), len(pulled)))
     if not frames:
-        failures.append("no VTK/contacts_*.vtp written")
+        failures.append("no contact frames in VTK/contacts.vtp.series")
     for name, fn in pulled:
         failures.append("%s: a sliding contact in tension, %.3g N/m" % (name, fn))
 
