@@ -385,6 +385,7 @@ bool nmmSolidModel::solveWithContacts
     services.conditioning = [this, dt](double bound) { checkConditioning(bound, dt); };
     services.timing = &timing_;
     services.log = log_;
+    parts_.contactMethod->carry(state_.contactSolver);
     const bool solved = parts_.contactMethod->solve
     (
         sys, space_->patchDisplacements(state_.D), state_.contacts,
@@ -489,6 +490,7 @@ void nmmSolidModel::updateTrial
         );
     }
     if (contacts()) trial_.contacts = contacts()->records();
+    if (parts_.contactMethod) trial_.contactSolver = parts_.contactMethod->carried();
     trialReady_ = true;
     timing_["update"] += clock.elapsed();
 }

@@ -439,6 +439,30 @@ std::vector<contactRecord> readContacts
     return result;
 }
 
+
+//- The contact solver's carried values (states written before they were
+//  kept have none: the solver starts from its defaults)
+std::map<std::string, double> readContactSolver
+(
+    const hdf5File& in,
+    const std::filesystem::path& file
+)
+{
+    std::map<std::string, double> values;
+    if (!in.exists("contactSolver")) return values;
+    for (const std::string& name : in.members("contactSolver"))
+    {
+        const auto v = in.read<double>("contactSolver/" + name);
+        if (v.size() != 1)
+        {
+            throw fatalError(file.string() + ": contactSolver/" + name + " has "
+                + std::to_string(v.size()) + " values, not one");
+        }
+        values[name] = v[0];
+    }
+    return values;
+}
+
 } // End anonymous namespace
 
 
@@ -461,6 +485,10 @@ void solidOutput::writeState
     for (const auto& v : s.sigma) sigma.values.insert(sigma.values.end(), v.data(), v.data() + 4);
     out.write("sigma", sigma);
     writeContacts(out, s.contacts);
+    for (const auto& [name, value] : s.contactSolver)
+    {
+        out.write("contactSolver/" + name, std::vector<double>{value});
+    }
     // Set by a coupled thermal solver only
     if (!s.temperature.empty()) out.write("temperature", s.temperature);
     if (steps)
@@ -537,6 +565,7 @@ solidState solidOutput::readState
         s.sigma.emplace_back(sigma(e, 0), sigma(e, 1), sigma(e, 2), sigma(e, 3));
     }
     s.contacts = readContacts(in, file, model);
+    s.contactSolver = readContactSolver(in, file);
     if (in.exists("temperature"))
     {
         s.temperature = in.read<double>("temperature");

@@ -41,6 +41,10 @@ constexpr int maxPulledSolves = 2;
 //- Up to this many closed contacts' rows the direct solve is dense
 constexpr int denseContactRows = 40;
 
+//- The joining gap over the widest free gap that others' forces closed
+//  in the last step, and its fall a step when none did
+constexpr double joiningGapGrowth = 2;
+
 
 double along(const contactModel::terms& t, const Eigen::VectorXd& x)
 {
@@ -133,16 +137,19 @@ bool contactGaussSeidel::solve
     const Eigen::VectorXd ddFree = bodies_.solve(f);
     srv.addTime("solution", clock);
 
-    // The contacts closed at the start or that the free motion closes;
-    // the others join when the solution would close them
+    // The contacts closed at the start, or that the free motion closes or
+    // leaves nearer than the joining gap; the others join when the
+    // solution would close them
     const std::size_t nc = contacts().size();
     free_.resize(nc);
     included_.assign(nc, 0);
+    openAtStart_.assign(nc, 0);
     for (std::size_t i = 0; i < nc; ++i)
     {
         free_[i] = {along(contacts().springTerms(2*i), ddFree),
                     along(contacts().springTerms(2*i + 1), ddFree)};
-        included_[i] = isClosed(contacts().state(i)) || contacts().startGap(i) + free_[i][0] < 0;
+        openAtStart_[i] = !isClosed(contacts().state(i));
+        included_[i] = !openAtStart_[i] || freeGap(i) < joiningGap_;
     }
     int sweeps = 0;
     bool settled = false;
@@ -159,6 +166,7 @@ bool contactGaussSeidel::solve
         joined = settled ? includeClosing(dd) : 0;
         srv.addTime("contact sweeps", clock);
     }
+    updateJoiningGap();
     const auto counts = contacts().settleForces(dd);
     report.iterations = sweeps;
     report.contacts = counts.states;
@@ -172,6 +180,42 @@ bool contactGaussSeidel::solve
         *srv.log << '\n';
     }
     return endStep(settled, report, dd);
+}
+
+
+double contactGaussSeidel::freeGap(std::size_t i) const
+{
+    return contacts().startGap(i) + free_[i][0];
+}
+
+
+void contactGaussSeidel::updateJoiningGap()
+{
+    // Twice the widest free gap that the others' forces closed this step,
+    // so that next step's like contacts are in the space from its start;
+    // halved a step when none was (the pile at rest)
+    double closed = 0;
+    for (std::size_t i = 0; i < included_.size(); ++i)
+    {
+        if (openAtStart_[i] && isClosed(contacts().state(i)))
+        {
+            closed = std::max(closed, freeGap(i));
+        }
+    }
+    joiningGap_ = std::max(joiningGapGrowth*closed, joiningGap_/joiningGapGrowth);
+}
+
+
+std::map<std::string, double> contactGaussSeidel::carried() const
+{
+    return {{"joiningGap", joiningGap_}};
+}
+
+
+void contactGaussSeidel::carry(const std::map<std::string, double>& values)
+{
+    const auto it = values.find("joiningGap");
+    joiningGap_ = it == values.end() ? 0 : it->second;
 }
 
 
