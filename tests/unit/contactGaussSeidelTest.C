@@ -28,30 +28,27 @@ namespace
 
 constexpr double rho = 2000, g = 9.81;
 
-//- Two 1 x 1 blocks stacked on a 4 x 1 base fixed at its bottom, the
-//  lower one pushed on its left side by a traction of resultant push
-//  [N/m] and no moment about the base (8 cos t (4 - 6 y) in Potra's
-//  stick-slip case), so that the push slides the blocks and does not
-//  tip them; a stiff material (E 1e9) under gravity, with the given
-//  analysis and contact method
-std::unique_ptr<testCase> stack
+//- Blocks on a fixed base, under gravity, the one whose left side is at
+//  x = 1 (0 < y < 1) pushed there by a traction of resultant push [N/m]
+//  and no moment about the base (8 cos t (4 - 6 y) in Potra's stick-slip
+//  case), so that the push slides the block and does not tip it; a stiff
+//  material (E 1e9). patches and fields: the fixed ones, beside the push
+std::unique_ptr<testCase> pushed
 (
-    const std::string& method,
-    const std::string& analysis,
-    double push = 0
+    const std::string& blocks,
+    const std::string& patches,
+    const std::string& fields,
+    const std::string& solution,
+    double push
 )
 {
     auto c = std::make_unique<testCase>
     (
-        "base { material rock; polygon ((0 -1) (4 -1) (4 0) (0 0)); }"
-        "lower { material rock; polygon ((1 0) (2 0) (2 1) (1 1)); }"
-        "upper { material rock; polygon ((1.2 1) (2.2 1) (2.2 2) (1.2 2)); }",
-        "fixed { type box; min (-1 -1.001); max (5 -0.999); }"
-        "push { type box; min (0.999 -1e-6); max (1.001 1.000001); }",
+        blocks,
+        patches + "push { type box; min (0.999 -1e-6); max (1.001 1.000001); }",
         "type structured; cellSize 0.25;",
-        analysis + "contact { method " + method + "; }\n",
-        "fixed { type fixedValue; value uniform (0 0 0); }"
-        "push { type tractionDisplacement; traction expression \"vector("
+        solution,
+        fields + "push { type tractionDisplacement; traction expression \"vector("
             + std::to_string(push) + "*(4 - 6*y), 0, 0)\"; pressure uniform 0; }",
         "(0 -9.81 0)"
     );
@@ -61,16 +58,37 @@ std::unique_ptr<testCase> stack
     return c;
 }
 
+//- Two 1 x 1 blocks stacked on a 4 x 1 base fixed at its bottom, the
+//  lower one pushed (see pushed()), with the given analysis and contact
+//  method
+std::unique_ptr<testCase> stack
+(
+    const std::string& method,
+    const std::string& analysis,
+    double push = 0
+)
+{
+    return pushed
+    (
+        "base { material rock; polygon ((0 -1) (4 -1) (4 0) (0 0)); }"
+        "lower { material rock; polygon ((1 0) (2 0) (2 1) (1 1)); }"
+        "upper { material rock; polygon ((1.2 1) (2.2 1) (2.2 2) (1.2 2)); }",
+        "fixed { type box; min (-1 -1.001); max (5 -0.999); }",
+        "fixed { type fixedValue; value uniform (0 0 0); }",
+        analysis + "contact { method " + method + "; }\n",
+        push
+    );
+}
+
 const std::string quasiStatic =
     "analysis dynamic; timeScheme { type DDA; velocityRatio 0; }\n";
 
 
 //- A row of 1 x 1 blocks on a fixed base, 1 mm apart, the last 1 mm
-//  short of a fixed wall, the first pushed towards the others by a
-//  resultant of push [N/m] (no moment about the base, as in stack());
-//  quasi-static steps. The first gap closes by the pushed block's own
-//  motion, each of the others only under the forces of the contacts
-//  before it
+//  short of a fixed wall, the first pushed towards the others (see
+//  pushed()); quasi-static steps. The first gap closes by the pushed
+//  block's own motion, each of the others only under the forces of the
+//  contacts before it
 std::unique_ptr<testCase> row(double push)
 {
     std::string blocks = "base { material rock; polygon ((0 -1) (9 -1) (9 0) (0 0)); }";
@@ -84,24 +102,16 @@ std::unique_ptr<testCase> row(double push)
     }
     std::ostringstream wall;
     wall << "wall { material rock; polygon ((" << x << " 0) (8 0) (8 1.5) (" << x << " 1.5)); }";
-    auto c = std::make_unique<testCase>
+    return pushed
     (
         blocks + wall.str(),
         "fixed { type box; min (-1 -1.001); max (10 -0.999); }"
-        "held { type box; min (7.999 -1e-6); max (8.001 1.500001); }"
-        "push { type box; min (0.999 -1e-6); max (1.001 1.000001); }",
-        "type structured; cellSize 0.25;",
-        quasiStatic + "contact { method gaussSeidel; }\n",
+        "held { type box; min (7.999 -1e-6); max (8.001 1.500001); }",
         "fixed { type fixedValue; value uniform (0 0 0); }"
-        "held { type fixedValue; value uniform (0 0 0); }"
-        "push { type tractionDisplacement; traction expression \"vector("
-            + std::to_string(push) + "*(4 - 6*y), 0, 0)\"; pressure uniform 0; }",
-        "(0 -9.81 0)"
+        "held { type fixedValue; value uniform (0 0 0); }",
+        quasiStatic + "contact { method gaussSeidel; }\n",
+        push
     );
-    c->dir.write("constant/mechanicalProperties", std::string(header)
-        + "planeStress no; thickness 1;\n"
-          "materials { rock { type linearElastic; E 1e9; nu 0.25; rho 2000; } }\n");
-    return c;
 }
 
 
