@@ -440,6 +440,24 @@ std::vector<contactRecord> readContacts
 }
 
 
+//- A dataset that holds one number
+double readOne
+(
+    const hdf5File& in,
+    const std::filesystem::path& file,
+    const std::string& name
+)
+{
+    const auto v = in.read<double>(name);
+    if (v.size() != 1)
+    {
+        throw fatalError(file.string() + ": " + name + " has "
+            + std::to_string(v.size()) + " values, not one");
+    }
+    return v[0];
+}
+
+
 //- The contact solver's carried values (states written before they were
 //  kept have none: the solver starts from its defaults)
 std::map<std::string, double> readContactSolver
@@ -452,13 +470,7 @@ std::map<std::string, double> readContactSolver
     if (!in.exists("contactSolver")) return values;
     for (const std::string& name : in.members("contactSolver"))
     {
-        const auto v = in.read<double>("contactSolver/" + name);
-        if (v.size() != 1)
-        {
-            throw fatalError(file.string() + ": contactSolver/" + name + " has "
-                + std::to_string(v.size()) + " values, not one");
-        }
-        values[name] = v[0];
+        values[name] = readOne(in, file, "contactSolver/" + name);
     }
     return values;
 }
@@ -510,13 +522,7 @@ std::optional<stepHistory> solidOutput::readStepHistory(const std::filesystem::p
     if (!in.exists("stepControl")) return std::nullopt;
     const auto one = [&](const char* name)
     {
-        const auto v = in.read<double>(std::string("stepControl/") + name);
-        if (v.size() != 1)
-        {
-            throw fatalError(file.string() + ": stepControl/" + name + " has "
-                + std::to_string(v.size()) + " values, not one");
-        }
-        return v[0];
+        return readOne(in, file, std::string("stepControl/") + name);
     };
     // States written before the ceiling was kept have none
     const double ceiling = in.exists("stepControl/ceiling") ? one("ceiling") : 0.0;
