@@ -141,3 +141,51 @@ TEST(patternCache, slotsAreWhereEachTripletWasSummed)
         ASSERT_EQ(A.innerIndexPtr()[s], i);
     }
 }
+
+
+TEST(patternCache, anExtraMatrixIsSummedAsItsEntriesAppendedToTheList)
+{
+    const int n = 40;
+    const auto positions = randomPositions(n, 900, 15);
+    // A fixed matrix (the mass matrix's role): entries inside and outside
+    // the list's pattern
+    std::vector<Eigen::Triplet<double>> m;
+    for (const auto& [i, j] : randomPositions(n, 300, 16)) m.emplace_back(i, j, 0.25 + i - j);
+    sparseMatrix M(n, n);
+    M.setFromTriplets(m.begin(), m.end());
+
+    patternCache cache;
+    for (unsigned step = 17; step < 21; ++step)
+    {
+        fill(cache, positions, step);
+        const double c = 1.0/step;
+        std::vector<Eigen::Triplet<double>> appended = cache.triplets();
+        for (int j = 0; j < M.outerSize(); ++j)
+        {
+            for (sparseMatrix::InnerIterator it(M, j); it; ++it)
+            {
+                appended.emplace_back(int(it.row()), j, c*it.value());
+            }
+        }
+        expectIdentical(cache.assemble(n, n, &M, c), direct(appended, n));
+    }
+    EXPECT_EQ(cache.made(), 1);
+    EXPECT_EQ(cache.reused(), 3);
+
+    // Another extra pattern, and none: each a new pattern
+    M.coeffRef(n - 1, 0) += 1;
+    M.makeCompressed();
+    fill(cache, positions, 22);
+    std::vector<Eigen::Triplet<double>> appended = cache.triplets();
+    for (int j = 0; j < M.outerSize(); ++j)
+    {
+        for (sparseMatrix::InnerIterator it(M, j); it; ++it)
+        {
+            appended.emplace_back(int(it.row()), j, 2*it.value());
+        }
+    }
+    expectIdentical(cache.assemble(n, n, &M, 2), direct(appended, n));
+    fill(cache, positions, 23);
+    expectIdentical(cache.assemble(n, n), direct(cache.triplets(), n));
+    EXPECT_EQ(cache.made(), 3);
+}

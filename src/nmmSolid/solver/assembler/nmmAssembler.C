@@ -519,21 +519,15 @@ nmmAssembler::system nmmAssembler::assemble
     addElements(s, patchD, K, sys.f);
     addBodyForce(sys.f);
     addSegments(s, patchD, t1, K, sys.f);
-    if (scheme.dynamic())
+    if (!scheme.dynamic())
     {
-        // After the elements' terms, so each entry is their sum plus the
-        // mass term, as K + c M would give
-        const double c = scheme.massFactor(dt);
-        for (int j = 0; j < M_.outerSize(); ++j)
-        {
-            for (sparseMatrix::InnerIterator it(M_, j); it; ++it)
-            {
-                K.emplace_back(int(it.row()), j, c*it.value());
-            }
-        }
-        sys.f += M_*(scheme.velocityFactor(dt)*s.V + scheme.accelerationFactor()*s.A);
+        sys.K = pattern_.assemble(n, n);
+        return sys;
     }
-    sys.K = pattern_.assemble(n, n);
+    // After the elements' terms, so each entry is their sum plus the mass
+    // term, as K + c M would give
+    sys.K = pattern_.assemble(n, n, &M_, scheme.massFactor(dt));
+    sys.f += M_*(scheme.velocityFactor(dt)*s.V + scheme.accelerationFactor()*s.A);
     return sys;
 }
 

@@ -5,29 +5,58 @@
 namespace nmm
 {
 
-bool patternCache::samePositions(Eigen::Index rows, Eigen::Index cols) const
+namespace
 {
-    if
-    (
-        matrix_.rows() != rows || matrix_.cols() != cols
-     || positions_.size() != triplets_.size()
-    )
+
+//- Per column j of A, -1 - j, then its entries' rows
+std::vector<int> patternOf(const Eigen::SparseMatrix<double>* A)
+{
+    std::vector<int> p;
+    if (!A) return p;
+    p.reserve(std::size_t(A->outerSize() + A->nonZeros()));
+    for (int j = 0; j < A->outerSize(); ++j)
+    {
+        p.push_back(-1 - j);
+        for (Eigen::SparseMatrix<double>::InnerIterator it(*A, j); it; ++it)
+        {
+            p.push_back(int(it.row()));
+        }
+    }
+    return p;
+}
+
+} // End anonymous namespace
+
+
+bool patternCache::sameExtra(const sparseMatrix* extra) const
+{
+    if (!extra) return extraPattern_.empty();
+    if (extraPattern_.size() != std::size_t(extra->outerSize() + extra->nonZeros()))
     {
         return false;
     }
-    for (std::size_t t = 0; t < triplets_.size(); ++t)
+    std::size_t p = 0;
+    for (int j = 0; j < extra->outerSize(); ++j)
     {
-        const triplet& x = triplets_[t];
-        if (positions_[t].first != x.row() || positions_[t].second != x.col()) return false;
+        if (extraPattern_[p++] != -1 - j) return false;
+        for (sparseMatrix::InnerIterator it(*extra, j); it; ++it)
+        {
+            if (extraPattern_[p++] != int(it.row())) return false;
+        }
     }
     return true;
 }
 
 
-void patternCache::makePattern(Eigen::Index rows, Eigen::Index cols)
+void patternCache::makePattern
+(
+    Eigen::Index rows,
+    Eigen::Index cols,
+    const sparseMatrix* extra
+)
 {
     std::vector<triplet> zeros;
-    zeros.reserve(triplets_.size());
+    zeros.reserve(triplets_.size() + std::size_t(extra ? extra->nonZeros() : 0));
     positions_.resize(triplets_.size());
     for (std::size_t t = 0; t < triplets_.size(); ++t)
     {
@@ -35,39 +64,83 @@ void patternCache::makePattern(Eigen::Index rows, Eigen::Index cols)
         zeros.emplace_back(x.row(), x.col(), 0.0);
         positions_[t] = {x.row(), x.col()};
     }
+    const std::size_t listed = zeros.size();
+    for (int j = 0; extra && j < extra->outerSize(); ++j)
+    {
+        for (sparseMatrix::InnerIterator it(*extra, j); it; ++it)
+        {
+            zeros.emplace_back(int(it.row()), j, 0.0);
+        }
+    }
     matrix_.resize(rows, cols);
     matrix_.setFromTriplets(zeros.begin(), zeros.end());
     matrix_.makeCompressed();
 
     const int* inner = matrix_.innerIndexPtr();
     const int* outer = matrix_.outerIndexPtr();
-    slots_.resize(triplets_.size());
+    const auto slotOf = [&](const triplet& x)
+    {
+        return int(std::lower_bound(inner + outer[x.col()], inner + outer[x.col() + 1], x.row())
+            - inner);
+    };
+    slots_.resize(listed);
+    for (std::size_t t = 0; t < listed; ++t) slots_[t] = slotOf(zeros[t]);
+    extraSlots_.resize(zeros.size() - listed);
+    for (std::size_t k = listed; k < zeros.size(); ++k) extraSlots_[k - listed] = slotOf(zeros[k]);
+    extraPattern_ = patternOf(extra);
+}
+
+
+bool patternCache::scatter()
+{
+    // The positions are checked in the same pass as the values are
+    // summed: one pass over a list of a million entries, not two
+    if (positions_.size() != triplets_.size()) return false;
+    double* values = matrix_.valuePtr();
+    std::fill(values, values + matrix_.nonZeros(), 0.0);
     for (std::size_t t = 0; t < triplets_.size(); ++t)
     {
-        const auto [i, j] = positions_[t];
-        slots_[t] = int(std::lower_bound(inner + outer[j], inner + outer[j + 1], i) - inner);
+        const triplet& x = triplets_[t];
+        if (positions_[t].first != x.row() || positions_[t].second != x.col()) return false;
+        values[slots_[t]] += x.value();
     }
+    return true;
 }
 
 
 const patternCache::sparseMatrix& patternCache::assemble
 (
     Eigen::Index rows,
-    Eigen::Index cols
+    Eigen::Index cols,
+    const sparseMatrix* extra,
+    double c
 )
 {
-    if (samePositions(rows, cols))
+    const bool kept = matrix_.rows() == rows && matrix_.cols() == cols && sameExtra(extra);
+    if (kept && scatter())
     {
         ++reused_;
     }
     else
     {
-        makePattern(rows, cols);
+        makePattern(rows, cols, extra);
         ++made_;
+        scatter();
     }
-    double* values = matrix_.valuePtr();
-    std::fill(values, values + matrix_.nonZeros(), 0.0);
-    for (std::size_t t = 0; t < triplets_.size(); ++t) values[slots_[t]] += triplets_[t].value();
+    if (extra)
+    {
+        // After the list, in the extra matrix's order: as its entries
+        // appended to the list would be summed
+        double* values = matrix_.valuePtr();
+        std::size_t k = 0;
+        for (int j = 0; j < extra->outerSize(); ++j)
+        {
+            for (sparseMatrix::InnerIterator it(*extra, j); it; ++it)
+            {
+                values[extraSlots_[k++]] += c*it.value();
+            }
+        }
+    }
     return matrix_;
 }
 
