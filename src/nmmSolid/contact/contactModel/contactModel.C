@@ -173,7 +173,11 @@ std::pair<contactModel::terms, contactModel::terms> contactModel::relativeTerms
     // n and s at once (one list, one sort); the terms of a dof both share
     // are summed after sorting
     struct term { int dof; double alongN, alongS; };
-    std::vector<term> all;
+    // One list per thread, kept from contact to contact: a pile's step
+    // makes these terms for thousands of contacts
+    thread_local std::vector<term> all;
+    all.clear();
+    all.reserve(space_.dofTerms(v.element).size() + space_.dofTerms(a.element).size());
     const auto add = [&](std::int32_t e, const manifoldElement::baryPoint& w, double sign)
     {
         for (const auto& t : space_.dofTerms(e))
@@ -188,10 +192,16 @@ std::pair<contactModel::terms, contactModel::terms> contactModel::relativeTerms
     };
     add(v.element, v.lambda, 1);
     add(a.element, edgePoint, -1);
-    std::stable_sort(all.begin(), all.end(), [](const term& x, const term& y)
+    // Stable, so a dof's terms are summed in the list's order; by
+    // insertion, as the list is a few dozen terms (stable_sort would
+    // allocate a buffer for each contact)
+    for (std::size_t k = 1; k < all.size(); ++k)
     {
-        return x.dof < y.dof;
-    });
+        const term t = all[k];
+        std::size_t j = k;
+        for (; j > 0 && all[j - 1].dof > t.dof; --j) all[j] = all[j - 1];
+        all[j] = t;
+    }
     std::pair<terms, terms> merged;
     auto& [g, h] = merged;
     g.reserve(all.size());
