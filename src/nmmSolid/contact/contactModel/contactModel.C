@@ -464,26 +464,56 @@ void contactModel::makeStepPattern
     const std::map<std::vector<int>, int>& cliques
 )
 {
-    std::vector<Eigen::Triplet<double>> zeros;
+    // Column by column: K's rows and those of every clique holding the
+    // column, each once (a marker per row), then sorted. A matrix of
+    // zeros summed with K by Eigen went through every clique's m^2
+    // entries three times, most of a wall's step
+    const int columns = int(K.cols());
+    std::vector<int> start(std::size_t(columns) + 1, 0);
     for (const auto& [dofs, c] : cliques)
     {
-        for (const int i : dofs)
-        {
-            for (const int j : dofs) zeros.emplace_back(i, j, 0.0);
-        }
+        for (const int j : dofs) ++start[std::size_t(j) + 1];
     }
-    sparseMatrix Z(K.rows(), K.cols());
-    Z.setFromTriplets(zeros.begin(), zeros.end());
-    stepMatrix_ = K + Z;
-    stepMatrix_.makeCompressed();
+    for (int j = 0; j < columns; ++j) start[std::size_t(j) + 1] += start[std::size_t(j)];
+    std::vector<const std::vector<int>*> holding(std::size_t(start.back()));
+    std::vector<int> next(start.begin(), start.end() - 1);
+    for (const auto& [dofs, c] : cliques)
+    {
+        for (const int j : dofs) holding[std::size_t(next[std::size_t(j)]++)] = &dofs;
+    }
+    std::vector<int> outer(std::size_t(columns) + 1, 0), inner, mark(std::size_t(columns), -1);
+    inner.reserve(std::size_t(K.nonZeros()));
+    for (int j = 0; j < columns; ++j)
+    {
+        const std::size_t first = inner.size();
+        const auto add = [&](int i)
+        {
+            if (mark[std::size_t(i)] == j) return;
+            mark[std::size_t(i)] = j;
+            inner.push_back(i);
+        };
+        for (int k = K.outerIndexPtr()[j]; k < K.outerIndexPtr()[j + 1]; ++k) add(K.innerIndexPtr()[k]);
+        for (int h = start[std::size_t(j)]; h < start[std::size_t(j) + 1]; ++h)
+        {
+            for (const int i : *holding[std::size_t(h)]) add(i);
+        }
+        std::sort(inner.begin() + long(first), inner.end());
+        outer[std::size_t(j) + 1] = int(inner.size());
+    }
+    stepMatrix_ = sparseMatrix(K.rows(), K.cols());
+    stepMatrix_.resizeNonZeros(long(inner.size()));
+    std::copy(outer.begin(), outer.end(), stepMatrix_.outerIndexPtr());
+    std::copy(inner.begin(), inner.end(), stepMatrix_.innerIndexPtr());
+    std::fill(stepMatrix_.valuePtr(), stepMatrix_.valuePtr() + inner.size(), 0.0);
+    kSlots_ = slotsIn(K, stepMatrix_);
+    for (std::size_t k = 0; k < kSlots_.size(); ++k) stepMatrix_.valuePtr()[kSlots_[k]] = K.valuePtr()[k];
     kOuter_.assign(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1);
     kInner_.assign(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros());
-    kSlots_ = slotsIn(K, stepMatrix_);
 
     // Each clique's column b, rows a, at [b m + a]: the rows are sorted,
     // so one walk down each column
     cliqueSlots_.assign(cliques.size(), {});
-    const int* inner = stepMatrix_.innerIndexPtr();
+    const int* rows = stepMatrix_.innerIndexPtr();
     for (const auto& [dofs, c] : cliques)
     {
         std::vector<int>& slots = cliqueSlots_[std::size_t(c)];
@@ -494,7 +524,7 @@ void contactModel::makeStepPattern
             int at = stepMatrix_.outerIndexPtr()[j];
             for (const int i : dofs)
             {
-                while (inner[at] != i) ++at;
+                while (rows[at] != i) ++at;
                 slots[n++] = at;
             }
         }
