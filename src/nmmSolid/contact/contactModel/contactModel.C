@@ -439,20 +439,9 @@ contactModel::sparseMatrix contactModel::withPattern(const sparseMatrix& K)
         cliqueKeys_ = std::move(keys);
     }
 
-    const auto fill = [this](const terms& t, int clique, std::vector<int>& out)
-    {
-        const std::vector<int>& slots = cliqueSlots_[std::size_t(clique)];
-        const std::size_t m = t.size();
-        out.resize(m*m);
-        for (std::size_t a = 0; a < m; ++a)
-        {
-            for (std::size_t b = 0; b < m; ++b) out[a*m + b] = slots[b*m + a];
-        }
-    };
     for (std::size_t c = 0; c < active_.size(); ++c)
     {
-        fill(active_[c].g, cliqueOf[c][0], active_[c].gSlots);
-        fill(active_[c].h, cliqueOf[c][1], active_[c].hSlots);
+        std::tie(active_[c].gClique, active_[c].hClique) = std::pair(cliqueOf[c][0], cliqueOf[c][1]);
     }
     return stepMatrix_;
 }
@@ -549,20 +538,23 @@ std::vector<double> contactModel::springStiffnesses() const
 void contactModel::addSprings(sparseMatrix& K) const
 {
     double* values = K.valuePtr();
-    const auto add = [values](const terms& t, const std::vector<int>& at, double k)
+    // Down each column b of the clique (its slots' order), the entry of
+    // row a gets k c_a c_b
+    const auto add = [this, values](const terms& t, int clique, double k)
     {
         if (k == 0) return;
+        const std::vector<int>& at = cliqueSlots_[std::size_t(clique)];
         std::size_t n = 0;
-        for (const auto& [i, ci] : t)
+        for (const auto& [j, cb] : t)
         {
-            for (const auto& [j, cj] : t) values[at[n++]] += k*ci*cj;
+            for (const auto& [i, ca] : t) values[at[n++]] += k*ca*cb;
         }
     };
     const std::vector<double> k = springStiffnesses();
     for (std::size_t i = 0; i < active_.size(); ++i)
     {
-        add(active_[i].g, active_[i].gSlots, k[2*i]);
-        add(active_[i].h, active_[i].hSlots, k[2*i + 1]);
+        add(active_[i].g, active_[i].gClique, k[2*i]);
+        add(active_[i].h, active_[i].hClique, k[2*i + 1]);
     }
 }
 
