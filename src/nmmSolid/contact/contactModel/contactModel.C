@@ -441,7 +441,8 @@ contactModel::sparseMatrix contactModel::withPattern(const sparseMatrix& K)
 
     for (std::size_t c = 0; c < active_.size(); ++c)
     {
-        std::tie(active_[c].gClique, active_[c].hClique) = std::pair(cliqueOf[c][0], cliqueOf[c][1]);
+        active_[c].gClique = cliqueOf[c][0];
+        active_[c].hClique = cliqueOf[c][1];
     }
     return stepMatrix_;
 }
@@ -456,7 +457,7 @@ void contactModel::makeStepPattern
     // Column by column: K's rows and those of every clique holding the
     // column, each once (a marker per row), then sorted. A matrix of
     // zeros summed with K by Eigen went through every clique's m^2
-    // entries three times, most of a wall's step
+    // entries three times, a quarter of a wall's step
     const int columns = int(K.cols());
     std::vector<int> start(std::size_t(columns) + 1, 0);
     for (const auto& [dofs, c] : cliques)

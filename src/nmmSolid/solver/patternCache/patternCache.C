@@ -30,6 +30,7 @@ std::vector<int> patternOf(const Eigen::SparseMatrix<double>* A)
 
 bool patternCache::sameExtra(const sparseMatrix* extra) const
 {
+    // Compared in patternOf's layout, without making a list of it
     if (!extra) return extraPattern_.empty();
     if (extraPattern_.size() != std::size_t(extra->outerSize() + extra->nonZeros()))
     {
