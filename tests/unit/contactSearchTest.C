@@ -84,6 +84,38 @@ TEST(contactSearch, squaresApartHaveNoContact)
 }
 
 
+TEST(contactSearch, aClearanceIsTheDistanceToTheNearestLoopItMayTouch)
+{
+    // A floor, a square 0.05 above it (within the search distance 0.1),
+    // a square 0.7 to the right of that one (nearest: the first square's
+    // box at 0.7, the floor's at 0.5 below), and a square far above all
+    // (2.3 above the second: beyond the reach 1); the floor's own outer
+    // loop, 0.8 above its hole, does not count for the hole, whose other
+    // blocks are all beyond the reach
+    const double d = 0.1, reach = 1;
+    std::vector<contactLoop> loops
+    {
+        rect(0, -5, -1, 5, 0),
+        rect(1, 0, 0.05, 1, 1.05),
+        rect(2, 1.7, 0.5, 2.7, 1.5),
+        rect(3, 0, 3.8, 1, 4.8),
+        loop(0, {{-4, -0.9}, {-4, -0.8}, {-3.9, -0.8}}, contactLoop::kind::hole)
+    };
+    const std::vector<double> c = contactSearch(d).clearances(loops, reach);
+    ASSERT_EQ(c.size(), loops.size());
+    EXPECT_DOUBLE_EQ(c[0], 0.05);
+    EXPECT_DOUBLE_EQ(c[1], 0.05);
+    EXPECT_DOUBLE_EQ(c[2], 0.5);
+    EXPECT_DOUBLE_EQ(c[3], reach);
+    EXPECT_DOUBLE_EQ(c[4], reach);
+    // Diagonally apart, the boxes' distance is the corners'
+    const std::vector<contactLoop> diagonal{rect(0, 0, 0, 1, 1), rect(1, 1.3, 1.4, 2, 2)};
+    const auto cd = contactSearch(d).clearances(diagonal, reach);
+    EXPECT_DOUBLE_EQ(cd[0], 0.5);
+    EXPECT_DOUBLE_EQ(cd[1], 0.5);
+}
+
+
 TEST(contactSearch, squareNearLongerBlockGivesItsTwoCorners)
 {
     const double d = 0.1, g = 0.05;

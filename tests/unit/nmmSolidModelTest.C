@@ -496,12 +496,12 @@ TEST(nmmSolidModel, restartStateKeepsTheStepHistory)
     // steps, the ceiling after a cut included, read back as written
     const auto m = fallenBlock("timeScheme { type DDA; velocityRatio 1; }", 0.01);
     const tempDir dir;
-    const nm::stepHistory written{0.0125, 0.0031, true, 0.0075};
+    const nm::stepHistory written{0.0125, 0.62, true, 0.0075};
     nm::solidOutput::writeState(dir.path, *m, &written);
     const auto read = nm::solidOutput::readStepHistory(dir.path);
     ASSERT_TRUE(read.has_value());
     EXPECT_EQ(read->last, written.last);
-    EXPECT_EQ(read->displacementRatio, written.displacementRatio);
+    EXPECT_EQ(read->motionUse, written.motionUse);
     EXPECT_EQ(read->cut, written.cut);
     EXPECT_EQ(read->ceiling, written.ceiling);
     // A state written without the step history has none

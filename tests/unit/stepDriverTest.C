@@ -28,7 +28,8 @@ public:
     double longest;
     bool futile = false;
     bool isDynamic = true;
-    double ratio = 0;
+    //- The motion's use of what a step may move (stepReport::motionUse)
+    double use = 0;
     std::vector<double> attempts;
     //- Whether each attempt started from the saved state
     std::vector<bool> cleanStarts;
@@ -50,7 +51,7 @@ public:
         stepReport r;
         r.deltaT = dt;
         r.cuts = cuts;
-        r.displacementRatio = ratio;
+        r.motionUse = use;
         r.converged = dt <= longest*(1 + 1e-12);
         if (!r.converged)
         {
@@ -114,6 +115,38 @@ TEST(stepDriver, growsAfterAnUncutStepUpToMaxDeltaT)
     std::vector<double> steps;
     for (int i = 0; i < 4; ++i) steps.push_back(driver.advance(10).deltaT);
     EXPECT_EQ(steps, (std::vector<double>{0.2, 0.4, 0.8, 1}));
+}
+
+
+TEST(stepDriver, namesWhatSetEachStep)
+{
+    // The log prints it beside each deltaT: the first step, growth, the
+    // last step's motion, maxDeltaT, next()'s bound, a cut
+    using limit = nmm::stepController::limit;
+    fakeSolid solid(10);
+    stepDriver driver(solid, settings(), 0.2, true);
+    std::vector<std::pair<double, limit>> steps;
+    const auto step = [&](double upperBound)
+    {
+        const double dt = driver.advance(upperBound).deltaT;
+        steps.emplace_back(dt, driver.controller().lastLimit());
+    };
+    step(10);                   // 0.2, the controlDict's
+    step(10);                   // 0.4 = 2 x 0.2
+    solid.use = 0.9;
+    step(10);                   // 0.8 = 2 x 0.4: the use is the step's own
+    step(10);                   // 0.8 = 0.9/0.9 x 0.8
+    solid.use = 0.1;
+    step(10);                   // 0.8 again (the last step's use was 0.9)
+    step(10);                   // 1: maxDeltaT, not 2 x 0.8
+    step(0.5);                  // 0.5: the bound
+    solid.longest = 0.3;
+    step(10);                   // 1 cut twice to 0.25
+    step(10);                   // 0.25: not grown after the cut
+    EXPECT_EQ(steps, (std::vector<std::pair<double, limit>>{
+        {0.2, limit::first}, {0.4, limit::growth}, {0.8, limit::growth},
+        {0.8, limit::motion}, {0.8, limit::motion}, {1, limit::maxDeltaT},
+        {0.5, limit::upperBound}, {0.25, limit::growth}, {0.25, limit::afterCut}}));
 }
 
 
@@ -186,11 +219,12 @@ TEST(stepDriver, aStepTheFitShortenedDoesNotShortenTheNext)
 TEST(stepDriver, aDynamicStepNearTheDisplacementLimitHoldsTheNext)
 {
     fakeSolid solid(10);
-    solid.ratio = 0.005;
+    solid.use = 1;
     stepDriver driver(solid, settings(), 0.5, true);
     driver.advance(10);
-    // 0.9 maxDisplacementRatio/ratio = 0.9 times the last step
+    // 0.9/use = 0.9 times the last step
     EXPECT_DOUBLE_EQ(driver.advance(10).deltaT, 0.45);
+    EXPECT_EQ(driver.controller().lastLimit(), nmm::stepController::limit::motion);
     // A static step's ratio is the user's load step: it does not limit
     // the one after it (0.405 x growth 2)
     solid.isDynamic = false;
@@ -206,13 +240,13 @@ TEST(stepDriver, aRestoredHistoryTakesTheStepsOfTheRunItContinues)
     for (const double longest : {10.0, 0.3})
     {
         fakeSolid solid(longest);
-        solid.ratio = 0.004;
+        solid.use = 0.8;
         stepDriver straight(solid, settings(), 0.2, true);
         straight.advance(10);
         straight.advance(10);
         const nmm::stepHistory h = straight.controller().history();
         EXPECT_GT(h.last, 0);
-        EXPECT_EQ(h.displacementRatio, 0.004);
+        EXPECT_EQ(h.motionUse, 0.8);
 
         stepDriver restarted(solid, settings(), 0.2, true);
         restarted.restore(h);

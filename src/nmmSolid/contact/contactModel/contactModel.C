@@ -1023,6 +1023,20 @@ contactModel::iterationCounts contactModel::settleForces(const Eigen::VectorXd& 
 }
 
 
+std::vector<double> contactModel::blockClearances(double reach) const
+{
+    const auto& loops = boundaries_.loops();
+    const std::vector<double> ofLoop = search_.clearances(loops, reach);
+    std::vector<double> ofBlock(materialOfBlock_.size(), reach);
+    for (std::size_t l = 0; l < loops.size(); ++l)
+    {
+        double& c = ofBlock[std::size_t(loops[l].block)];
+        c = std::min(c, ofLoop[l]);
+    }
+    return ofBlock;
+}
+
+
 double contactModel::maxPenetration() const
 {
     double p = 0;

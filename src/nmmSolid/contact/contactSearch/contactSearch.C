@@ -857,6 +857,58 @@ std::vector<std::pair<std::size_t, std::size_t>> contactSearch::loopPairs
 }
 
 
+std::vector<double> contactSearch::clearances
+(
+    const std::vector<contactLoop>& loops,
+    double reach
+) const
+{
+    std::vector<double> clearance(loops.size(), reach);
+    std::vector<boxSearch::box> boxes;
+    std::vector<std::size_t> loopOfBox;
+    for (std::size_t i = 0; i < loops.size(); ++i)
+    {
+        if (loops[i].nEdges() == 0) continue;
+        boxes.push_back(enlargedBox(loops[i], 0));
+        loopOfBox.push_back(i);
+    }
+    const auto nearest = [&](std::size_t i, std::size_t j)
+    {
+        const std::size_t a = loopOfBox[i], b = loopOfBox[j];
+        if (a == b || !mayTouch(loops[a], loops[b])) return;
+        const double d = std::min(boxes[i].exteriorDistance(boxes[j]), reach);
+        clearance[a] = std::min(clearance[a], d);
+        clearance[b] = std::min(clearance[b], d);
+    };
+
+    // Most loops of a pack have a neighbour within the search distance:
+    // only the others are looked for further, so that the boxes enlarged
+    // by the reach meet few others
+    const auto enlarged = [&](double d)
+    {
+        std::vector<boxSearch::box> grown(boxes);
+        for (auto& b : grown)
+        {
+            b.min().array() -= d;
+            b.max().array() += d;
+        }
+        return grown;
+    };
+    for (const auto& [i, j] : boxSearch::selfPairs(enlarged(distance_/2))) nearest(i, j);
+    std::vector<boxSearch::box> far;
+    std::vector<std::size_t> boxOfFar;
+    const auto reaching = enlarged(reach);
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+    {
+        if (clearance[loopOfBox[i]] <= distance_) continue;
+        far.push_back(reaching[i]);
+        boxOfFar.push_back(i);
+    }
+    for (const auto& [f, j] : boxSearch::pairs(far, boxes)) nearest(boxOfFar[f], j);
+    return clearance;
+}
+
+
 std::vector<contactCandidate> contactSearch::find
 (
     const std::vector<contactLoop>& loops,

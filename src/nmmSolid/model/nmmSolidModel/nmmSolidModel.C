@@ -122,6 +122,7 @@ void nmmSolidModel::createContacts()
     p.halfSize = halfSize_;
     p.maxDisplacementRatio = stepControl_.maxDisplacementRatio;
     p.dynamic = parts_.scheme->dynamic();
+    p.quasiStatic = p.dynamic && !parts_.scheme->keepsVelocity();
     parts_.contactMethod->setUp(std::move(p));
     assembler_->threaded(parts_.contactMethod->solvesBodyByBody());
 }

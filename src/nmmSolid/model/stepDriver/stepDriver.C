@@ -96,7 +96,7 @@ stepDriver::outcome stepDriver::advance
     steps_.accepted
     (
         last.cuts ? dt : std::max(dt, proposal),
-        solid_.dynamic() ? last.displacementRatio : 0.0
+        solid_.dynamic() ? last.motionUse : 0.0
     );
     result.deltaT = dt;
     result.steps = 1;

@@ -506,8 +506,7 @@ void solidOutput::writeState
     if (steps)
     {
         out.write("stepControl/lastDeltaT", std::vector<double>{steps->last});
-        out.write("stepControl/lastDisplacementRatio",
-            std::vector<double>{steps->displacementRatio});
+        out.write("stepControl/lastMotionUse", std::vector<double>{steps->motionUse});
         out.write("stepControl/lastCut", std::vector<double>{double(steps->cut)});
         out.write("stepControl/ceiling", std::vector<double>{steps->ceiling});
     }
@@ -524,9 +523,14 @@ std::optional<stepHistory> solidOutput::readStepHistory(const std::filesystem::p
     {
         return readOne(in, file, std::string("stepControl/") + name);
     };
-    // States written before the ceiling was kept have none
+    // States written before the ceiling was kept have none; those written
+    // before the motion's use was kept have the displacement ratio, which
+    // the history no longer holds: the next step is then held only by
+    // growth (and cut if it moves too far)
     const double ceiling = in.exists("stepControl/ceiling") ? one("ceiling") : 0.0;
-    return stepHistory{one("lastDeltaT"), one("lastDisplacementRatio"), one("lastCut") != 0, ceiling};
+    const double motionUse =
+        in.exists("stepControl/lastMotionUse") ? one("lastMotionUse") : 0.0;
+    return stepHistory{one("lastDeltaT"), motionUse, one("lastCut") != 0, ceiling};
 }
 
 

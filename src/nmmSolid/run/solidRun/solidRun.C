@@ -149,10 +149,15 @@ void solidRun::writeFrame()
 void solidRun::evolve()
 {
     // The write times are hit exactly where the controlDict asks for it
-    const auto fitToWriteTimes = [this](double dt)
+    std::string limit;
+    const auto fitToWriteTimes = [this, &limit](double dt)
     {
         runTime_.setDeltaT(dt, runTime_.adjustTimeStep());
-        log_ << "deltaT = " << runTime_.deltaTValue() << '\n';
+        // Spread evenly to the next write time, the steps change by less
+        // than a tenth while more than five remain: that is not the limit
+        limit = runTime_.deltaTValue() < 0.9*dt ? "a write time"
+            : stepController::name(driver_->controller().lastLimit());
+        log_ << "deltaT = " << runTime_.deltaTValue() << " (" << limit << ")\n";
         return runTime_.deltaTValue();
     };
     const stepDriver::outcome done = driver_->advance(runTime_.maxDeltaT(), fitToWriteTimes);
@@ -166,6 +171,7 @@ void solidRun::evolve()
             + " is on disk"
         );
     }
+    countStepLimit(limit);
     runTime_.setDeltaT(done.deltaT, false);
     ++runTime_;
     log_ << "Time = " << runTime_.timeName() << "\n" << std::endl;
@@ -205,6 +211,15 @@ void solidRun::printStep() const
 }
 
 
+void solidRun::countStepLimit(const std::string& limit)
+{
+    const auto same = [&](const auto& counted) { return counted.first == limit; };
+    const auto it = std::find_if(stepLimits_.begin(), stepLimits_.end(), same);
+    if (it != stepLimits_.end()) ++it->second;
+    else stepLimits_.emplace_back(limit, 1);
+}
+
+
 void solidRun::end() const
 {
     // A lower bound of the condition number: 1e16 over it is roughly the
@@ -213,6 +228,19 @@ void solidRun::end() const
         " factorisation, or the bound of a solve with an updated one): "
         << model_->largestPivotRatio() << '\n';
     model_->printTiming(log_);
+    if (!stepLimits_.empty())
+    {
+        // What held the steps back: the first thing to look at when a run
+        // takes more steps than expected
+        log_ << "Steps by what set their length:";
+        const char* separator = " ";
+        for (const auto& [limit, n] : stepLimits_)
+        {
+            log_ << separator << limit << ' ' << n;
+            separator = ", ";
+        }
+        log_ << '\n';
+    }
     if (loopClock_)
     {
         log_ << "Time loop (wall s): " << loopClock_->elapsed() << ", of which writing "

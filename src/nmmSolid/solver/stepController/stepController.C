@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <utility>
 
 namespace nmm
 {
@@ -75,19 +76,44 @@ stepController::stepController
 {}
 
 
+const char* stepController::name(limit l)
+{
+    switch (l)
+    {
+        case limit::first: return "the first step";
+        case limit::growth: return "growth";
+        case limit::motion: return "the last step's motion";
+        case limit::afterCut: return "after a cut";
+        case limit::ceiling: return "the ceiling after a cut";
+        case limit::maxDeltaT: return "maxDeltaT";
+        case limit::fixed: return "the controlDict's deltaT (fixed steps)";
+        case limit::upperBound: return "the controlDict's maxDeltaT or end";
+    }
+    return "";
+}
+
+
 double stepController::next(double upperBound)
 {
     cutThisStep_ = false;
-    if (last_.last <= 0) return std::min(nominal_, upperBound);
-    double factor = last_.cut ? 1 : settings_.growth;
-    if (last_.displacementRatio > 0)
+    std::pair<double, limit> step{nominal_, limit::first};
+    const auto bound = [&step](double value, limit l)
     {
-        factor = std::min(factor, 0.9*settings_.maxDisplacementRatio/last_.displacementRatio);
+        if (value < step.first) step = {value, l};
+    };
+    if (last_.last > 0)
+    {
+        step = last_.cut
+            ? std::pair{last_.last, limit::afterCut}
+            : std::pair{last_.last*settings_.growth, limit::growth};
+        if (last_.motionUse > 0) bound(last_.last*(0.9/last_.motionUse), limit::motion);
+        if (last_.ceiling > 0) bound(last_.ceiling, limit::ceiling);
+        if (adjustable_) bound(settings_.maxDeltaT, limit::maxDeltaT);
+        else bound(nominal_, limit::fixed);
     }
-    double grown = last_.last*factor;
-    if (last_.ceiling > 0) grown = std::min(grown, last_.ceiling);
-    const double cap = adjustable_ ? settings_.maxDeltaT : nominal_;
-    return std::min({grown, cap, upperBound});
+    bound(upperBound, limit::upperBound);
+    limit_ = step.second;
+    return step.first;
 }
 
 
@@ -100,7 +126,7 @@ std::optional<double> stepController::cut(double dt)
 }
 
 
-void stepController::accepted(double dt, double displacementRatio)
+void stepController::accepted(double dt, double motionUse)
 {
     double ceiling = 0;
     const bool ceilinged = adjustable_ && settings_.regrowth < settings_.growth;
@@ -114,7 +140,7 @@ void stepController::accepted(double dt, double displacementRatio)
         ceiling = last_.ceiling*settings_.regrowth;
         if (ceiling >= settings_.maxDeltaT) ceiling = 0;
     }
-    last_ = {dt, displacementRatio, cutThisStep_, ceiling};
+    last_ = {dt, motionUse, cutThisStep_, ceiling};
 }
 
 } // End namespace nmm

@@ -1,5 +1,6 @@
 #include "nmmSolid/contact/contactSolver/penaltyOpenClose/penaltyOpenClose.H"
 
+#include "nmmSolid/geometry/blockGeometry/blockGeometry.H"
 #include "nmmSolid/global/clock/clockTime.H"
 #include "nmmSolid/space/manifoldSpace/manifoldSpace.H"
 
@@ -25,6 +26,9 @@ constexpr double normalOverShearPenalty = 2.5;
 constexpr double searchOverStep = 2.5;
 //- Deepest penetration a step may end with, over the search distance
 constexpr double penetrationOverSearch = 0.4;
+//- How far a quasi-static run looks for a block's clearance, over the
+//  search distance: its steps move a block at most 4 search distances
+constexpr double clearanceReachOverSearch = 10;
 
 } // End anonymous namespace
 
@@ -92,9 +96,13 @@ penaltyOpenClose::penaltyOpenClose(const dictionary& d, const keywordTable& k)
 void penaltyOpenClose::setUp(problem p)
 {
     space_ = p.space;
+    geometry_ = p.geometry;
     halfSize_ = p.halfSize;
     maxDisplacementRatio_ = p.maxDisplacementRatio;
     dynamic_ = p.dynamic;
+    quasiStatic_ = p.quasiStatic;
+    blockOfPatch_.clear();
+    for (const auto& patch : p.space->elements().patches()) blockOfPatch_.push_back(int(patch.block));
 
     contactModel::settings s;
     s.normalPenalty =
@@ -234,8 +242,29 @@ bool penaltyOpenClose::endStep(bool settled, stepReport& report, const Eigen::Ve
     const auto patchDD = space_->patchDisplacements(dd);
     report.displacementRatio = patchDD.cols()
         ? patchDD.colwise().norm().maxCoeff()/halfSize_ : 0.0;
+    motion_ = quasiStatic_ ? searchMotion(patchDD)
+        : motion{report.displacementRatio/maxDisplacementRatio_};
+    report.motionUse = dynamic_ ? motion_.use : 0.0;
     report.cutReason = cutReason(settled, report);
     return report.cutReason.empty();
+}
+
+
+penaltyOpenClose::motion penaltyOpenClose::searchMotion(const Eigen::Matrix2Xd& patchDD) const
+{
+    const double d = contacts_->parameters().searchDistance;
+    const std::vector<double> clearance =
+        contacts_->blockClearances(clearanceReachOverSearch*d);
+    motion most;
+    for (long p = 0; p < patchDD.cols(); ++p)
+    {
+        const int b = blockOfPatch_[std::size_t(p)];
+        const double c = clearance[std::size_t(b)];
+        const double allowed = std::max(d, c)/searchOverStep;
+        const double moved = patchDD.col(p).norm();
+        if (moved > most.use*allowed) most = {moved/allowed, b, moved, allowed, c};
+    }
+    return most;
 }
 
 
@@ -319,7 +348,14 @@ std::string penaltyOpenClose::cutReason(bool settled, const stepReport& report) 
         why << "penetration " << contacts_->maxPenetrationGrowth()
             << " m exceeds the limit " << penetrationLimit_ << " m";
     }
-    else if (dynamic_ && report.displacementRatio > maxDisplacementRatio_)
+    else if (quasiStatic_ && motion_.use > 1)
+    {
+        why << "block " << geometry_->blocks()[std::size_t(motion_.block)].name()
+            << " moved " << motion_.moved << " m, more than the contact search"
+            " lets a step move it (" << motion_.allowed << " m: 0.4 of the"
+            " search distance or of its clearance " << motion_.clearance << " m)";
+    }
+    else if (dynamic_ && !quasiStatic_ && report.displacementRatio > maxDisplacementRatio_)
     {
         why << "displacement ratio " << report.displacementRatio
             << " exceeds maxDisplacementRatio " << maxDisplacementRatio_;
