@@ -70,6 +70,10 @@ TEST(quasiStaticSteps, aBlockFarAboveAFloorFallsInStepsTheSearchAllows)
         const nm::stepReport& r = m->lastStep();
         EXPECT_LE(r.motionUse, 1) << "step " << steps;
         EXPECT_LE(r.maxPenetration, 0.4*d) << "step " << steps;
+        // 0.4 of the larger of d and the gap (looked for up to 10 d)
+        // before the step: the block's clearance, as it falls straight
+        const double clearance = std::min(gap + before, 10*d);
+        EXPECT_LE(before - lowest(), 0.4*std::max(d, clearance)*(1 + 1e-9)) << "step " << steps;
         longest = std::max(longest, before - lowest());
         if (r.contacts[1] + r.contacts[2] > 0) landedAt = steps;
     }
