@@ -353,7 +353,8 @@ std::string penaltyOpenClose::cutReason(bool settled, const stepReport& report) 
         why << "block " << geometry_->blocks()[std::size_t(motion_.block)].name()
             << " moved " << motion_.moved << " m, more than the contact search"
             " lets a step move it (" << motion_.allowed << " m: 0.4 of the"
-            " search distance or of its clearance " << motion_.clearance << " m)";
+            " larger of the search distance " << contacts_->parameters().searchDistance
+            << " m and the block's clearance " << motion_.clearance << " m)";
     }
     else if (dynamic_ && !quasiStatic_ && report.displacementRatio > maxDisplacementRatio_)
     {
