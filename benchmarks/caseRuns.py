@@ -85,6 +85,14 @@ def timeLoop(solverLog):
     return float(m.group(1)) if m else None
 
 
+def stepLimits(solverLog):
+    """What set the steps' lengths, as the solver log counts them ("Steps
+    by what set their length: growth 184, ..."), "" for a log of an
+    earlier build"""
+    m = re.search(r"Steps by what set their length: (.*)", solverLog)
+    return m.group(1).strip() if m else ""
+
+
 def solverFigures(case, solverLog):
     """What a run of nmmSolidFoam in case did, from its log and its
     contactStatistics table (postProcessing/contacts): accepted steps,
@@ -98,6 +106,7 @@ def solverFigures(case, solverLog):
     f["iterations"] = sum(r[7] for r in f["stats"])/f["steps"]
     f["solves"] = (f["factorisations"] + f["updates"])/f["steps"]
     f["wall"] = timeLoop(solverLog)
+    f["limits"] = stepLimits(solverLog)
     return f
 
 
