@@ -864,47 +864,32 @@ std::vector<double> contactSearch::clearances
 ) const
 {
     std::vector<double> clearance(loops.size(), reach);
-    std::vector<boxSearch::box> boxes;
-    std::vector<std::size_t> loopOfBox;
-    for (std::size_t i = 0; i < loops.size(); ++i)
+    std::vector<boxSearch::box> boxes(loops.size());
+    for (std::size_t i = 0; i < loops.size(); ++i) boxes[i] = enlargedBox(loops[i], 0);
+    const auto nearest = [&](std::size_t a, std::size_t b)
     {
-        if (loops[i].nEdges() == 0) continue;
-        boxes.push_back(enlargedBox(loops[i], 0));
-        loopOfBox.push_back(i);
-    }
-    const auto nearest = [&](std::size_t i, std::size_t j)
-    {
-        const std::size_t a = loopOfBox[i], b = loopOfBox[j];
         if (a == b || !mayTouch(loops[a], loops[b])) return;
-        const double d = std::min(boxes[i].exteriorDistance(boxes[j]), reach);
+        const double d = std::min(boxes[a].exteriorDistance(boxes[b]), reach);
         clearance[a] = std::min(clearance[a], d);
         clearance[b] = std::min(clearance[b], d);
     };
 
-    // Most loops of a pack have a neighbour within the search distance:
-    // only the others are looked for further, so that the boxes enlarged
-    // by the reach meet few others
-    const auto enlarged = [&](double d)
+    // The broad phase's pairs give most loops of a pack theirs: only the
+    // loops with nothing within the search distance are looked for
+    // further, so that the boxes enlarged by the reach meet few others
+    for (const auto& [a, b] : loopPairs(loops)) nearest(a, b);
+    std::vector<boxSearch::box> far, all;
+    std::vector<std::size_t> loopOfFar, loopOfBox;
+    for (std::size_t i = 0; i < loops.size(); ++i)
     {
-        std::vector<boxSearch::box> grown(boxes);
-        for (auto& b : grown)
-        {
-            b.min().array() -= d;
-            b.max().array() += d;
-        }
-        return grown;
-    };
-    for (const auto& [i, j] : boxSearch::selfPairs(enlarged(distance_/2))) nearest(i, j);
-    std::vector<boxSearch::box> far;
-    std::vector<std::size_t> boxOfFar;
-    const auto reaching = enlarged(reach);
-    for (std::size_t i = 0; i < boxes.size(); ++i)
-    {
-        if (clearance[loopOfBox[i]] <= distance_) continue;
-        far.push_back(reaching[i]);
-        boxOfFar.push_back(i);
+        if (loops[i].nEdges() == 0) continue;
+        all.push_back(boxes[i]);
+        loopOfBox.push_back(i);
+        if (clearance[i] <= distance_) continue;
+        far.push_back(enlargedBox(loops[i], reach));
+        loopOfFar.push_back(i);
     }
-    for (const auto& [f, j] : boxSearch::pairs(far, boxes)) nearest(boxOfFar[f], j);
+    for (const auto& [f, j] : boxSearch::pairs(far, all)) nearest(loopOfFar[f], loopOfBox[j]);
     return clearance;
 }
 
