@@ -214,6 +214,16 @@ double cholmod::factorisationWork() const
 }
 
 
+double cholmod::solveWork() const
+{
+    // A supernodal solve runs over the stored blocks, zeros and all, as
+    // factorisationWork counts them
+    const cholmod_factor* L = impl_->llt.factor();
+    if (L && L->is_super) return 2.0*double(L->xsize);
+    return linearSolver::solveWork();
+}
+
+
 long cholmod::factorNonZeros() const
 {
     // lnz of the selected ordering: the true nonzeros, where the
