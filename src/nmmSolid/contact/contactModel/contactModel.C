@@ -245,6 +245,7 @@ void contactModel::beginStep
     const auto& loops = boundaries_.loops();
     const std::vector<contactCandidate> found = search_.find(loops, threaded_);
     active_.assign(found.size(), active{});
+    statesSteady_ = false;
     // Each contact's terms and springs on its own: on OpenMP's threads
     const long nFound = long(found.size());
     #pragma omp parallel for schedule(dynamic, 64) if (threaded_ && nFound >= minThreadedContacts)
@@ -794,16 +795,11 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
         double friction = r.state == contactState::open ? 0.0 : d.frictionForce;
         if (d.state == contactState::sliding && d.state == r.state)
         {
-            // The lagged update overshoots where friction and normal force
-            // drive each other (a wedged grain): a change that reverses
-            // the last one is halved, which makes the iteration contract
-            const double change = friction - a.friction;
-            if (change*a.frictionChange < 0) friction = a.friction + 0.5*change;
-            a.frictionChange = friction - a.friction;
+            friction = a.frictionStep.next(a.friction, friction, statesSteady_);
             // A change of the size of a spring's force over the rounding
             // of a gap is rounding
             const double scale = std::max(std::abs(friction), a.kN*gapRounding_);
-            const double moved = std::abs(a.frictionChange);
+            const double moved = std::abs(a.frictionStep.lastChange());
             if (moved > frictionTolerance*scale) ++counts.frictionUpdates;
             if (moved > frictionTolerance*a.kN*gapRounding_)
             {
@@ -819,6 +815,7 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
         a.friction = friction;
         ++counts.states[contactStateNumber(r.state)];
     }
+    statesSteady_ = counts.changes == 0;
     return counts;
 }
 
