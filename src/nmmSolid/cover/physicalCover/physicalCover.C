@@ -470,10 +470,13 @@ physicalCover::physicalCover
 
     patches_ = findPatches(cover, elements_, stretches);
     setSupportRatios(cover);
+    std::vector<bool> fixedBlock;
+    for (const auto& b : geometry.blocks()) fixedBlock.push_back(b.fixed());
     buildExtensions
     (
         &cover,
-        keywords().get<double>(coverDict, "sliverTolerance")
+        keywords().get<double>(coverDict, "sliverTolerance"),
+        fixedBlock
     );
 }
 

@@ -152,9 +152,15 @@ void physicalCover::setSupportRatios(const mathematicalCover& cover)
 void physicalCover::buildExtensions
 (
     const mathematicalCover* cover,
-    double sliverTolerance
+    double sliverTolerance,
+    const std::vector<bool>& fixedBlock
 )
 {
+    const auto isFixed = [&](label p)
+    {
+        const label b = patches_[p].block;
+        return b >= 0 && std::size_t(b) < fixedBlock.size() && fixedBlock[std::size_t(b)];
+    };
     std::vector<bool> healthy(patches_.size());
     for (std::size_t p = 0; p < patches_.size(); ++p)
     {
@@ -181,7 +187,7 @@ void physicalCover::buildExtensions
     std::vector<label> source(patches_.size(), -1);
     for (label p = 0; p < label(patches_.size()); ++p)
     {
-        if (healthy[p]) continue;
+        if (healthy[p] || isFixed(p)) continue;
         source[p] = healthyElement(p, *cover, patches_, elements_, elementsOf, healthy);
         if (source[p] < 0 && patches_[p].supportRatio < dustSupportRatio)
         {
@@ -196,7 +202,7 @@ void physicalCover::buildExtensions
     unknownPatches_.clear();
     for (label p = 0; p < label(patches_.size()); ++p)
     {
-        if (source[p] >= 0) continue;
+        if (source[p] >= 0 || isFixed(p)) continue;
         unknownIndex_[p] = label(unknownPatches_.size());
         unknownPatches_.push_back(p);
     }
@@ -206,7 +212,11 @@ void physicalCover::buildExtensions
     stats_.nExtendedPatches = 0;
     for (label p = 0; p < label(patches_.size()); ++p)
     {
-        if (source[p] < 0)
+        if (isFixed(p))
+        {
+            // No terms: its displacement is zero
+        }
+        else if (source[p] < 0)
         {
             extensionTerms_.push_back({unknownIndex_[p], 1.0});
         }

@@ -84,6 +84,7 @@ block readBlock(const entry& item)
         item.where()
     );
     geometryCheck::checkHoles(b);
+    b.setFixed(blockGeometry::blockKeywords().get<bool>(dict, "fixed"));
     return b;
 }
 
@@ -142,6 +143,9 @@ const keywordTable& blockGeometry::blockKeywords()
         t.list("polygon", "outer loop ((x y) ...), either way round; a closing "
             "vertex equal to the first is dropped").required();
         t.list("holes", "loops strictly inside the polygon: ( ((x y) ...) ... )");
+        t.boolean("fixed", "the block neither moves nor deforms (a container's "
+            "walls, a floor): it has no unknowns, and a contact with it acts on "
+            "the other body only").defaultValue("no");
         return t;
     }();
     return table;

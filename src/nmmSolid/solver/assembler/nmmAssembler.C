@@ -226,6 +226,12 @@ void nmmAssembler::addElements
     #pragma omp parallel for schedule(static) if (threaded_ && nE >= minThreadedElements)
     for (label e = 0; e < nE; ++e)
     {
+        // A fixed block's element has no terms (nmm::physicalCover)
+        if (space_.dofTerms(e).size() == 0)
+        {
+            fe[std::size_t(e)].setZero();
+            continue;
+        }
         const auto T = space_.currentTriangle(e, patchD);
         const double area = space_.currentArea(e, T);
         const matrix36 B = manifoldElement::strainMatrix(T);

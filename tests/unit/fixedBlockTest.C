@@ -1,0 +1,156 @@
+// A fixed block (nmmMeshDict: fixed yes) has no unknowns and does not
+// move: a block resting on a fixed base carries its weight on its
+// contacts, the base's patches stay where they are, and the contact space
+// solves the block's contacts with the base on the block's side only. The
+// keyword's bad value is an error that names it.
+#include "nmmSolid/global/fatalError/fatalError.H"
+#include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
+#include "nmmSolid/model/solutionControls/solutionControls.H"
+
+#include "modelCase.H"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+namespace nm = nmm;
+using nmm::test::header;
+using testCase = nmm::test::modelCase;
+using testing::HasSubstr;
+
+namespace
+{
+
+constexpr double rho = 2000, g = 9.81;
+
+//- A 1 x 1 block on a 4 x 1 base, the base fixed (fixed yes) or held at
+//  its bottom by a prescribed displacement
+std::unique_ptr<testCase> restingBlock(const std::string& baseFixed, const std::string& method)
+{
+    auto c = std::make_unique<testCase>
+    (
+        "base { material rock; " + baseFixed + " polygon ((0 -1) (4 -1) (4 0) (0 0)); }"
+        "block { material rock; polygon ((1 0) (2 0) (2 1) (1 1)); }",
+        "held { type box; min (-1 -1.001); max (5 -0.999); }",
+        "type structured; cellSize 0.25;",
+        "analysis dynamic; timeScheme { type DDA; velocityRatio 1; }\n"
+        "initialEquilibrium yes;\ncontact { method " + method + "; }\n",
+        "held { type fixedValue; value uniform (0 0 0); }",
+        "(0 -9.81 0)"
+    );
+    c->dir.write("constant/mechanicalProperties", std::string(header)
+        + "planeStress no; thickness 1;\n"
+          "materials { rock { type linearElastic; E 1e9; nu 0.25; rho 2000; } }\n");
+    return c;
+}
+
+
+//- The sum of the closed contacts' forces on the block (the base is block
+//  0, the block 1), (x, y)
+Eigen::Vector2d contactForce(const nm::solidState& s)
+{
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    for (const auto& k : s.contacts)
+    {
+        if (!nm::isClosed(k.state)) continue;
+        const Eigen::Vector2d t(-k.normal.y(), k.normal.x());
+        const Eigen::Vector2d onVertex = k.normalForce*k.normal + k.shearForce*t;
+        sum += k.normal.y() > 0 ? onVertex : Eigen::Vector2d(-onVertex);
+    }
+    return sum;
+}
+
+
+//- The largest displacement of block b's patches
+double largestDisplacement(const nm::nmmSolidModel& m, int b)
+{
+    const auto& pc = m.elements();
+    const Eigen::Matrix2Xd d = m.patchDisplacements();
+    double largest = 0;
+    for (std::size_t p = 0; p < pc.patches().size(); ++p)
+    {
+        if (pc.patches()[p].block == b) largest = std::max(largest, d.col(long(p)).norm());
+    }
+    return largest;
+}
+
+} // End anonymous namespace
+
+
+TEST(fixedBlock, hasNoUnknowns)
+{
+    const auto fixed = restingBlock("fixed yes;", "penalty");
+    const auto held = restingBlock("", "penalty");
+    const auto mFixed = fixed->model();
+    const auto mHeld = held->model();
+    const auto& pc = mFixed->elements();
+    const auto& pcHeld = mHeld->elements();
+
+    // The same cover, less the base's unknowns: every unknown is the block's
+    ASSERT_EQ(pc.patches().size(), pcHeld.patches().size());
+    std::size_t blockUnknowns = 0;
+    for (const auto p : pcHeld.unknownPatches()) blockUnknowns += pcHeld.patches()[p].block == 1;
+    ASSERT_GT(blockUnknowns, 0u);
+    EXPECT_EQ(pc.unknownPatches().size(), blockUnknowns);
+    for (const auto p : pc.unknownPatches()) EXPECT_EQ(pc.patches()[p].block, 1);
+    for (std::size_t p = 0; p < pc.patches().size(); ++p)
+    {
+        if (pc.patches()[p].block != 0) continue;
+        EXPECT_EQ(pc.unknownIndex(nm::physicalCover::label(p)), -1);
+        EXPECT_EQ(pc.extensionBegin(nm::physicalCover::label(p)), pc.extensionEnd(nm::physicalCover::label(p)));
+    }
+}
+
+
+TEST(fixedBlock, carriesTheWeightOfABlockOnItWithoutMoving)
+{
+    // The initial equilibrium (the penalty method's static solve), then
+    // steps in contact space (gaussSeidel): the block's contacts with the
+    // base have terms on the block's side only
+    for (const std::string method : {"penalty", "gaussSeidel"})
+    {
+        SCOPED_TRACE(method);
+        const auto c = restingBlock("fixed yes;", method);
+        auto m = c->model();
+        m->solveInitialEquilibrium();
+        const double weight = rho*g;
+        Eigen::Vector2d F = contactForce(m->state());
+        EXPECT_NEAR(F.y(), weight, 1e-9*weight);
+        EXPECT_NEAR(F.x(), 0, 1e-9*weight);
+        EXPECT_GT(largestDisplacement(*m, 1), 0);
+
+        const double dt = 1e-3;
+        for (int step = 0; step < 5; ++step)
+        {
+            ASSERT_TRUE(m->solveStep(dt).converged) << "step " << step;
+            m->acceptStep();
+        }
+        EXPECT_EQ(largestDisplacement(*m, 0), 0);
+        // At rest on its contacts: their forces still carry its weight to
+        // within the block's elastic ringing (its weight on springs of E
+        // 1e9 moves it by about 1e-5 m)
+        F = contactForce(m->state());
+        EXPECT_NEAR(F.y(), weight, 1e-3*weight);
+        EXPECT_NEAR(F.x(), 0, 1e-3*weight);
+        EXPECT_LT(largestDisplacement(*m, 1), 1e-4);
+    }
+}
+
+
+TEST(fixedBlock, badValueIsAnErrorNamingTheKeyword)
+{
+    const auto c = restingBlock("fixed maybe;", "penalty");
+    try
+    {
+        c->model();
+        FAIL() << "no error";
+    }
+    catch (const nm::IOerror& e)
+    {
+        EXPECT_EQ(e.keyword(), "fixed");
+        EXPECT_THAT(e.message(), HasSubstr("maybe"));
+        EXPECT_THAT(e.where().fileName(), HasSubstr("nmmMeshDict"));
+    }
+}
