@@ -3,9 +3,7 @@
 // contacts, the base's patches stay where they are, and the contact space
 // solves the block's contacts with the base on the block's side only. The
 // keyword's bad value is an error that names it.
-#include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
-#include "nmmSolid/model/solutionControls/solutionControls.H"
 
 #include "modelCase.H"
 
@@ -18,6 +16,7 @@
 namespace nm = nmm;
 using nmm::test::header;
 using testCase = nmm::test::modelCase;
+using nmm::test::contactForceOnUpper;
 using testing::HasSubstr;
 
 namespace
@@ -44,22 +43,6 @@ std::unique_ptr<testCase> restingBlock(const std::string& baseFixed, const std::
         + "planeStress no; thickness 1;\n"
           "materials { rock { type linearElastic; E 1e9; nu 0.25; rho 2000; } }\n");
     return c;
-}
-
-
-//- The sum of the closed contacts' forces on the block (the base is block
-//  0, the block 1), (x, y)
-Eigen::Vector2d contactForce(const nm::solidState& s)
-{
-    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
-    for (const auto& k : s.contacts)
-    {
-        if (!nm::isClosed(k.state)) continue;
-        const Eigen::Vector2d t(-k.normal.y(), k.normal.x());
-        const Eigen::Vector2d onVertex = k.normalForce*k.normal + k.shearForce*t;
-        sum += k.normal.y() > 0 ? onVertex : Eigen::Vector2d(-onVertex);
-    }
-    return sum;
 }
 
 
@@ -116,7 +99,7 @@ TEST(fixedBlock, carriesTheWeightOfABlockOnItWithoutMoving)
         auto m = c->model();
         m->solveInitialEquilibrium();
         const double weight = rho*g;
-        Eigen::Vector2d F = contactForce(m->state());
+        Eigen::Vector2d F = contactForceOnUpper(m->state());
         EXPECT_NEAR(F.y(), weight, 1e-9*weight);
         EXPECT_NEAR(F.x(), 0, 1e-9*weight);
         EXPECT_GT(largestDisplacement(*m, 1), 0);
@@ -131,7 +114,7 @@ TEST(fixedBlock, carriesTheWeightOfABlockOnItWithoutMoving)
         // At rest on its contacts: their forces still carry its weight to
         // within the block's elastic ringing (its weight on springs of E
         // 1e9 moves it by about 1e-5 m)
-        F = contactForce(m->state());
+        F = contactForceOnUpper(m->state());
         EXPECT_NEAR(F.y(), weight, 1e-3*weight);
         EXPECT_NEAR(F.x(), 0, 1e-3*weight);
         EXPECT_LT(largestDisplacement(*m, 1), 1e-4);

@@ -21,6 +21,7 @@
 namespace nm = nmm;
 using nmm::test::header;
 using testCase = nmm::test::modelCase;
+using nmm::test::contactForceOnUpper;
 using testing::HasSubstr;
 
 namespace
@@ -59,24 +60,6 @@ std::unique_ptr<testCase> restingBlock(const std::string& push = "(0 0 0)", doub
 }
 
 
-//- The sums of the closed contacts' forces on the block, (x, y)
-Eigen::Vector2d contactForce(const nm::solidState& s)
-{
-    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
-    for (const auto& k : s.contacts)
-    {
-        if (!nm::isClosed(k.state)) continue;
-        // Along the edge's outward normal and tangent, on the vertex; the
-        // block is the vertex body where the edge is the base's (normal
-        // up), and the opposite where it is its own
-        const Eigen::Vector2d t(-k.normal.y(), k.normal.x());
-        const Eigen::Vector2d onVertex = k.normalForce*k.normal + k.shearForce*t;
-        sum += k.normal.y() > 0 ? onVertex : Eigen::Vector2d(-onVertex);
-    }
-    return sum;
-}
-
-
 //- The velocity of block b's centre of mass, (M V) over M summed over
 //  its unknowns (the weights are a partition of unity): the elastic
 //  block's vibration, which a step's change of its loads starts, averages
@@ -112,7 +95,7 @@ TEST(initialEquilibrium, restingBlockCarriesItsWeight)
     EXPECT_EQ(s.timeIndex, 0);
     ASSERT_FALSE(s.contacts.empty());
     const double weight = rho*g;
-    const Eigen::Vector2d F = contactForce(s);
+    const Eigen::Vector2d F = contactForceOnUpper(s);
     EXPECT_NEAR(F.y(), weight, 1e-9*weight);
     EXPECT_NEAR(F.x(), 0, 1e-9*weight);
     // The springs are compressed, the block's stresses carry the weight
@@ -152,7 +135,7 @@ TEST(initialEquilibrium, aPushedBlockStartsFromRestAndSlides)
     const auto c = restingBlock("(" + std::to_string(0.7*rho*g) + " 0 0)");
     auto m = c->model();
     m->solveInitialEquilibrium();
-    const Eigen::Vector2d F = contactForce(m->state());
+    const Eigen::Vector2d F = contactForceOnUpper(m->state());
     EXPECT_NEAR(F.y(), rho*g, 1e-9*rho*g);
     EXPECT_NEAR(F.x(), -0.7*rho*g, 1e-9*rho*g);
     for (const auto& k : m->state().contacts)
