@@ -106,6 +106,55 @@ public:
 };
 
 
+//- Boxes of runs of consecutive edges of the long loops (a container's
+//  boundary, cut by the cover into hundreds of edges), enlarged by the
+//  search distance. Every grain near the container forms a pair with it;
+//  its search skips the runs away from the grain instead of testing each
+//  edge of the container for every grain
+class edgeRuns
+{
+    static constexpr std::size_t length_ = 16;
+    std::vector<std::vector<boxSearch::box>> boxes_;
+    const std::vector<boxSearch::box> none_;
+
+public:
+
+    //- The runs of the loops marked, those with more than four runs
+    edgeRuns
+    (
+        const std::vector<contactLoop>& loops,
+        const std::vector<bool>& marked,
+        double d
+    )
+    :
+        boxes_(loops.size())
+    {
+        for (std::size_t l = 0; l < loops.size(); ++l)
+        {
+            const contactLoop& loop = loops[l];
+            if (!marked[l] || loop.nEdges() <= 4*length_) continue;
+            for (std::size_t first = 0; first < loop.nEdges(); first += length_)
+            {
+                const std::size_t last = std::min(first + length_, loop.nEdges());
+                boxSearch::box b(loop.edgeStart(first).x);
+                for (std::size_t e = first; e < last; ++e) b.extend(loop.edgeEnd(e).x);
+                b.min().array() -= d;
+                b.max().array() += d;
+                boxes_[l].push_back(b);
+            }
+        }
+    }
+
+    static constexpr std::size_t length() { return length_; }
+
+    //- The boxes of loop l's runs; none for a short loop
+    const std::vector<boxSearch::box>& of(int l) const
+    {
+        return boxes_[std::size_t(l)];
+    }
+};
+
+
 //- Buffers every pair search reuses, so that the many small pairs of a
 //  packing do not allocate
 struct pairBuffers
@@ -211,13 +260,14 @@ class pairSearch
     const double angleTolerance_;
     const int la_, lb_;
     reflexFlags& reflex_;
+    const edgeRuns& runs_;
     pairBuffers& buf_;
 
-    //- Edges of l whose boxes, enlarged by d, meet the box near: only those
-    //  can have an enlarged box meeting one of the other loop's
+    //- Edges of loop li whose boxes, enlarged by d, meet the box near: only
+    //  those can have an enlarged box meeting one of the other loop's
     void nearEdges
     (
-        const contactLoop& l,
+        int li,
         const boxSearch::box& near,
         std::vector<int>& edges,
         std::vector<boxSearch::box>& boxes
@@ -225,15 +275,22 @@ class pairSearch
     {
         edges.clear();
         boxes.clear();
-        for (std::size_t e = 0; e < l.nEdges(); ++e)
+        const contactLoop& l = loops_[std::size_t(li)];
+        const auto& runs = runs_.of(li);
+        for (std::size_t first = 0; first < l.nEdges(); first += edgeRuns::length())
         {
-            boxSearch::box b =
-                boxSearch::segmentBox(l.edgeStart(e).x, l.edgeEnd(e).x);
-            b.min().array() -= d_;
-            b.max().array() += d_;
-            if (!b.intersects(near)) continue;
-            edges.push_back(int(e));
-            boxes.push_back(b);
+            if (!runs.empty() && !runs[first/edgeRuns::length()].intersects(near)) continue;
+            const std::size_t last = std::min(first + edgeRuns::length(), l.nEdges());
+            for (std::size_t e = first; e < last; ++e)
+            {
+                boxSearch::box b =
+                    boxSearch::segmentBox(l.edgeStart(e).x, l.edgeEnd(e).x);
+                b.min().array() -= d_;
+                b.max().array() += d_;
+                if (!b.intersects(near)) continue;
+                edges.push_back(int(e));
+                boxes.push_back(b);
+            }
         }
     }
 
@@ -241,8 +298,8 @@ class pairSearch
     //  tested when there are few (two grains), the box search otherwise
     void findEdgePairs(const boxSearch::box& boxA, const boxSearch::box& boxB)
     {
-        nearEdges(loops_[la_], boxB, buf_.edgesA, buf_.boxesA);
-        nearEdges(loops_[lb_], boxA, buf_.edgesB, buf_.boxesB);
+        nearEdges(la_, boxB, buf_.edgesA, buf_.boxesA);
+        nearEdges(lb_, boxA, buf_.edgesB, buf_.boxesB);
         const auto& ea = buf_.edgesA;
         const auto& eb = buf_.edgesB;
         buf_.edgePairs.clear();
@@ -503,11 +560,11 @@ public:
     (
         const std::vector<contactLoop>& loops,
         double d, double angleTolerance, int la, int lb,
-        reflexFlags& reflex, pairBuffers& buf
+        reflexFlags& reflex, const edgeRuns& runs, pairBuffers& buf
     )
     :
         loops_(loops), d_(d), angleTolerance_(angleTolerance), la_(la), lb_(lb),
-        reflex_(reflex), buf_(buf)
+        reflex_(reflex), runs_(runs), buf_(buf)
     {
         buf_.edgeEdge.clear();
         buf_.edgeEdgeVertices.clear();
@@ -920,6 +977,7 @@ std::vector<contactCandidate> contactSearch::find
     {
         if (boxed[l]) reflex.workOut(l);
     }
+    const edgeRuns runs(loops, boxed, distance_);
 
     // The pairs are independent: searched on OpenMP's threads, each with
     // its own buffers, their candidates joined in the pairs' order (the
@@ -935,7 +993,7 @@ std::vector<contactCandidate> contactSearch::find
             const auto& [a, b] = pairs[std::size_t(k)];
             pairSearch
             (
-                loops, distance_, angleTolerance_, int(a), int(b), reflex, buffers
+                loops, distance_, angleTolerance_, int(a), int(b), reflex, runs, buffers
             ).run(boxes[a], boxes[b], found[std::size_t(k)]);
         }
     }
