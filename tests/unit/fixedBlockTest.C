@@ -137,3 +137,26 @@ TEST(fixedBlock, badValueIsAnErrorNamingTheKeyword)
         EXPECT_THAT(e.where().fileName(), HasSubstr("nmmMeshDict"));
     }
 }
+
+
+TEST(fixedBlock, conditionOnItAloneIsReported)
+{
+    // The patch 'held' lies on the base's bottom edge only: fixed, its
+    // condition cannot act, and the log says so with the 0/D entry
+    for (const std::string baseFixed : {"fixed yes;", ""})
+    {
+        SCOPED_TRACE(baseFixed);
+        const auto c = restingBlock(baseFixed, "penalty");
+        testing::internal::CaptureStdout();
+        const auto m = c->model();
+        const std::string out = testing::internal::GetCapturedStdout();
+        if (baseFixed.empty())
+        {
+            EXPECT_THAT(out, testing::Not(HasSubstr("no effect")));
+            continue;
+        }
+        EXPECT_THAT(out, HasSubstr("fixedValue condition of patch 'held' has no effect"));
+        EXPECT_THAT(out, HasSubstr("fixed blocks only ('base')"));
+        EXPECT_THAT(out, HasSubstr("0/D"));
+    }
+}

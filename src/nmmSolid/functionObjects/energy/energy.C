@@ -68,6 +68,8 @@ double energy::strain() const
     {
         const auto label = nmmAssembler::label(e);
         const Eigen::Vector3d s = sigma[e].head<3>();
+        // An unstressed element (a fixed block's) holds no energy
+        if (s.isZero(0)) continue;
         const double area = space.currentArea(label, space.currentTriangle(label, patchD));
         sum += 0.5*s.dot(compliance_[e]*s)*area;
     }

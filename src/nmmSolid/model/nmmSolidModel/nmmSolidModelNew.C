@@ -5,7 +5,10 @@
 #include "nmmSolid/io/case/caseFolder/caseFolder.H"
 
 #include <filesystem>
+#include <iostream>
 #include <map>
+#include <set>
+#include <string>
 
 namespace nmm
 {
@@ -46,6 +49,46 @@ boundaryRule ruleOf(const patchCondition& c, const blockGeometry& geometry)
             break;
     }
     return r;
+}
+
+
+//- Says so when a condition's patch lies on fixed blocks only: they do
+//  not move (nmm::physicalCover), whatever the condition. A warning, not
+//  an error, so that a container held by its outer faces can be made a
+//  fixed block without editing 0/D
+void warnFixedOnly
+(
+    const boundaryConditions& conditions,
+    const blockGeometry& geometry,
+    const physicalCover& elements,
+    const std::vector<int>& segmentRule
+)
+{
+    const auto& cs = conditions.conditions();
+    std::vector<bool> onMoving(cs.size(), false);
+    std::vector<std::set<std::string>> fixedBlocks(cs.size());
+    for (std::size_t k = 0; k < segmentRule.size(); ++k)
+    {
+        const int r = segmentRule[k];
+        if (r < 0) continue;
+        const auto e = elements.segments()[k].element;
+        const block& b = geometry.blocks()[std::size_t(elements.elements()[e].block)];
+        if (b.fixed()) fixedBlocks[std::size_t(r)].insert("'" + b.name() + "'");
+        else onMoving[std::size_t(r)] = true;
+    }
+    for (std::size_t r = 0; r < cs.size(); ++r)
+    {
+        if (onMoving[r] || fixedBlocks[r].empty()) continue;
+        std::string names;
+        for (const auto& n : fixedBlocks[r]) names += (names.empty() ? "" : ", ") + n;
+        printWarning
+        (
+            std::cout,
+            cs[r].where.str() + ": the " + bcTypeName(cs[r].type) + " condition of patch '"
+            + geometry.patches()[cs[r].patch].name + "' has no effect: the patch lies on"
+            " fixed blocks only (" + names + "), which do not move"
+        );
+    }
 }
 
 
@@ -95,6 +138,7 @@ void nmmSolidModel::parts::setConditions(std::unique_ptr<boundaryConditions> bc)
             : conditions->condition(s.face);
         segmentRule.push_back(c ? index.at(c) : -1);
     }
+    warnFixedOnly(*conditions, *geometry, *elements, segmentRule);
 }
 
 

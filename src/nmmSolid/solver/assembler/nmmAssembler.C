@@ -226,8 +226,7 @@ void nmmAssembler::addElements
     #pragma omp parallel for schedule(static) if (threaded_ && nE >= minThreadedElements)
     for (label e = 0; e < nE; ++e)
     {
-        // A fixed block's element has no terms (nmm::physicalCover)
-        if (space_.dofTerms(e).size() == 0)
+        if (space_.fixedElement(e))
         {
             fe[std::size_t(e)].setZero();
             continue;
@@ -257,6 +256,7 @@ void nmmAssembler::addBodyForce(Eigen::VectorXd& f) const
     if (gravity_.isZero()) return;
     for (label e = 0; e < label(pc_.nElements()); ++e)
     {
+        if (space_.fixedElement(e)) continue;
         const vector6 fe = manifoldElement::bodyForce
         (
             pc_.elements()[e].moments, materials_[e].rho*gravity_, thickness_

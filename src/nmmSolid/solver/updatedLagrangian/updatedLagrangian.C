@@ -61,6 +61,10 @@ std::vector<double> updatedLagrangian::updateStresses
     std::vector<double> rotations(els.size(), 0.0);
     for (std::size_t e = 0; e < els.size(); ++e)
     {
+        const double dT = dTemperature.empty() ? 0.0 : dTemperature[e];
+        // A fixed block's element neither strains nor turns; only a
+        // temperature change stresses it
+        if (space_.fixedElement(label(e)) && dT == 0) continue;
         const auto T = space_.currentTriangle(label(e), patchD0);
         const auto B = manifoldElement::strainMatrix(T);
         manifoldElement::vector6 de;
@@ -73,7 +77,6 @@ std::vector<double> updatedLagrangian::updateStresses
         const auto& m = assembler_.material(label(e));
         Eigen::Vector4d& s = sigma[e];
         if (largeDisplacement_) s = rotated(s, rotation(w));
-        const double dT = dTemperature.empty() ? 0.0 : dTemperature[e];
         const Eigen::Vector3d ds = m.D*(B*de - assembler_.thermalStrain(label(e), dT));
         s.head<3>() += ds;
         s[3] += m.zzFactor*(ds[0] + ds[1]) + m.zzThermal*dT;
