@@ -187,6 +187,22 @@ void row(const std::string& name, const T& value)
 }
 
 
+//- The fixed blocks (fixed yes: no unknowns), when there are any: the
+//  count and the first few names
+void printFixedBlocks(const nmm::blockGeometry& geometry)
+{
+    std::size_t n = 0;
+    std::string names;
+    for (const auto& b : geometry.blocks())
+    {
+        if (!b.fixed()) continue;
+        if (++n <= 4) names += (names.empty() ? "" : ", ") + b.name();
+    }
+    if (n == 0) return;
+    row("fixed blocks", std::to_string(n) + " (" + names + (n > 4 ? ", ...)" : ")"));
+}
+
+
 //- Print the report; returns the failed checks
 std::vector<std::string> report
 (
@@ -205,6 +221,7 @@ std::vector<std::string> report
 
     std::cout << "\nMesh stats\n";
     row("blocks", geometry.nBlocks());
+    printFixedBlocks(geometry);
     row("joints", geometry.nJoints());
     row("holes", geometry.nHoles());
     row("vertices", geometry.nVertices());
