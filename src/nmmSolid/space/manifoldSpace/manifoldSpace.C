@@ -39,6 +39,8 @@ manifoldSpace::manifoldSpace
         }
     }
     termStart_.push_back(terms_.size());
+    reference_.reserve(nElements);
+    for (const auto& e : pc_.elements()) reference_.push_back(physicalCover::triangleOf(cover_, e));
 }
 
 
@@ -67,7 +69,7 @@ Eigen::Matrix2Xd manifoldSpace::patchDisplacements(const Eigen::VectorXd& D) con
 
 triangleNodes manifoldSpace::referenceTriangle(label e) const
 {
-    return physicalCover::triangleOf(cover_, pc_.elements()[e]);
+    return reference_[std::size_t(e)];
 }
 
 
