@@ -115,7 +115,6 @@ class edgeRuns
 {
     static constexpr std::size_t length_ = 16;
     std::vector<std::vector<boxSearch::box>> boxes_;
-    const std::vector<boxSearch::box> none_;
 
 public:
 
