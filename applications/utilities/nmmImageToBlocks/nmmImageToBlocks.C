@@ -74,6 +74,7 @@ Usage
 #include "nmmGeometryTools/geometryCase/geometryCase.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/argList/argList.H"
+#include "nmmSolid/io/countAndNames/countAndNames.H"
 #include "nmmSolid/io/dictionary/dictionary.H"
 #include "nmmSolid/io/dictionary/keywordTable.H"
 
@@ -160,21 +161,6 @@ void row(const std::string& name, const T& value)
         << value << "\n";
 }
 
-//- "n (a b c ...)": at most a few names, for the log
-std::string countAndNames(const std::vector<std::string>& names)
-{
-    constexpr std::size_t most = 8;
-    std::string text = std::to_string(names.size());
-    if (names.empty()) return text;
-    text += " (";
-    for (std::size_t i = 0; i < std::min(names.size(), most); ++i)
-    {
-        text += (i ? " " : "") + names[i];
-    }
-    return text + (names.size() > most ? " ...)" : ")");
-}
-
-
 nmm::labelImage readImage(const settings& s, const nmm::dictionary& dict)
 {
     const std::string what = "cannot read the image \"" + s.image.string() + "\": ";
@@ -217,7 +203,7 @@ void reportGrains(const nmm::grainRegions& regions, const settings& s, const nmm
     row("grains", std::to_string(n) + " (4-connected pieces of one label)");
     for (const auto& [label, names] : split)
     {
-        row("label " + std::to_string(label) + " in pieces", countAndNames(names));
+        row("label " + std::to_string(label) + " in pieces", nmm::countAndNames(names));
     }
 }
 
@@ -236,8 +222,8 @@ void dropGrains(nmm::grainRegions& regions, const settings& s, const nmm::dictio
         else continue;
         drop[k] = true;
     }
-    if (s.dropBorderGrains) row("dropped at the border", countAndNames(border));
-    if (s.minGrainArea > 0) row("dropped below minGrainArea", countAndNames(small));
+    if (s.dropBorderGrains) row("dropped at the border", nmm::countAndNames(border));
+    if (s.minGrainArea > 0) row("dropped below minGrainArea", nmm::countAndNames(small));
     if (border.size() + small.size() == drop.size())
     {
         std::ostringstream os;
@@ -389,7 +375,7 @@ void reportBoundaries(const nmm::boundaryGraph& graph, const outlines& o, const 
     row("vertices simplified", tol.str());
     if (!o.keptAsTraced.empty())
     {
-        row("kept as traced", countAndNames(o.keptAsTraced)
+        row("kept as traced", nmm::countAndNames(o.keptAsTraced)
             + ": simplified, not a valid block");
     }
 }

@@ -48,6 +48,7 @@ Usage
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/argList/argList.H"
 #include "nmmSolid/io/case/caseFolder/caseFolder.H"
+#include "nmmSolid/io/countAndNames/countAndNames.H"
 #include "nmmSolid/io/dictionary/dictionary.H"
 #include "nmmSolid/material/mechanicalProperties/mechanicalProperties.H"
 #include "nmmSolid/output/hdf5/nmmMeshFile/nmmMeshFile.H"
@@ -187,19 +188,15 @@ void row(const std::string& name, const T& value)
 }
 
 
-//- The fixed blocks (fixed yes: no unknowns), when there are any: the
-//  count and the first few names
+//- The fixed blocks (fixed yes: no unknowns), when there are any
 void printFixedBlocks(const nmm::blockGeometry& geometry)
 {
-    std::size_t n = 0;
-    std::string names;
+    std::vector<std::string> names;
     for (const auto& b : geometry.blocks())
     {
-        if (!b.fixed()) continue;
-        if (++n <= 4) names += (names.empty() ? "" : ", ") + b.name();
+        if (b.fixed()) names.push_back(b.name());
     }
-    if (n == 0) return;
-    row("fixed blocks", std::to_string(n) + " (" + names + (n > 4 ? ", ...)" : ")"));
+    if (!names.empty()) row("fixed blocks", nmm::countAndNames(names));
 }
 
 
