@@ -187,7 +187,7 @@ TEST(argList, bannerAsOpenFOAMs)
     EXPECT_TRUE(contains(b, nmm::gitRevision));
     EXPECT_TRUE(contains(b, "Exec   : nmmSolidFoam -case /tmp\n"));
     for (const char* label : {"Build  : ", "Date   : ", "Time   : ",
-        "Host   : ", "PID    : ", "nProcs : 1"})
+        "Host   : ", "PID    : ", "nProcs : 1", "BLAS   : "})
     {
         EXPECT_TRUE(contains(b, label)) << label;
     }

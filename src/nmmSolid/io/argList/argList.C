@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <iomanip>
 #include <iostream>
+#include <dlfcn.h>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -39,6 +40,18 @@ std::string hostName()
     char buf[256] = {};
     if (::gethostname(buf, sizeof(buf) - 1) != 0) return "unknown";
     return buf;
+}
+
+//- The BLAS the factorisations run on. OpenBLAS picks its kernels by the
+//  processor (AVX2, AVX-512, ...), and their rounding differs: a penalty
+//  run whose path is sensitive takes other steps on another machine
+//  (tutorials/paper/roughFracture). Looked up at run time, so that any
+//  BLAS links
+std::string blasName()
+{
+    using query = char* (*)();
+    const auto config = reinterpret_cast<query>(::dlsym(RTLD_DEFAULT, "openblas_get_config"));
+    return config ? config() : "not OpenBLAS";
 }
 
 //- "-case <dir>" as shown in usage lists
@@ -320,6 +333,7 @@ void argList::printBanner(std::ostream& os) const
         << "PID    : " << ::getpid() << '\n'
         << "Case   : " << casePath_.string() << '\n'
         << "nProcs : 1\n"
+        << "BLAS   : " << blasName() << '\n'
         << separator << '\n' << std::flush;
 }
 
