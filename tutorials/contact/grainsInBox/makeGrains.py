@@ -2,7 +2,8 @@
 """Writes system/nmmMeshDict of the grainsInBox tutorial: a U-shaped box
 and irregular convex grains above it, placed on a jittered grid so that
 none overlap. The random generator is seeded, so the file is the same on
-every run.
+every run. The box is a fixed block (fixed yes), as a DEM code models a
+container: it has no unknowns, and its contacts act on the grains only.
 
     /usr/bin/python3 makeGrains.py [nColumns nRows seed [wall [drop]]]
 
@@ -79,7 +80,7 @@ blocks = []
 top = floor + drop + nRows*pitch
 box = [(-wall, -floor), (width + wall, -floor), (width + wall, top),
        (width, top), (width, 0), (0, 0), (0, top), (-wall, top)]
-blocks.append("    box { material steel; polygon %s; }" % polygon(box))
+blocks.append("    box { material steel; fixed yes; polygon %s; }" % polygon(box))
 for j in range(nRows):
     for i in range(nColumns):
         cx = (i + 0.5)*pitch + rng.uniform(-0.05, 0.05)*pitch
@@ -91,10 +92,9 @@ with open("system/nmmMeshDict", "w") as f:
     f.write(header)
     f.write("blocks\n(\n" + "\n".join(blocks) + "\n);\n\n")
     f.write("""\
+// The box is fixed: no patch holds it
 patches
 {
-    // The box stands on a fixed floor
-    base    { type box; min (-1 %g); max (2 %g); }
 }
 
 cover
@@ -102,4 +102,4 @@ cover
     type        structured;
     cellSize    %g;
 }
-""" % (-floor - 1e-6, -floor + 1e-6, pitch/4))
+""" % (pitch/4))
