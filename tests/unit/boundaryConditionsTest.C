@@ -203,6 +203,24 @@ TEST(boundaryConditionsErrors, entryNamingNoPatch)
 }
 
 
+TEST(boundaryConditionsErrors, entryWhereThereAreNoPatches)
+{
+    // A case whose walls are fixed blocks has no patches (grainsInBox)
+    const blockGeometry noPatches = blockGeometry::read(dictionary::parse(
+        std::string(blocksAndJoints) + "patches { }\n", "system/nmmMeshDict"));
+    const IOerror err = nmm::test::errorOf([&]
+    {
+        boundaryConditions(dictionary::parse(
+            "boundaryField\n{\n    base { type fixedValue; value 0; }\n}\n", "0/D"),
+            noPatches);
+    });
+    EXPECT_EQ(err.keyword(), "base");
+    EXPECT_THAT(err.message(), HasSubstr("defines no patches"));
+    EXPECT_NO_THROW(boundaryConditions(dictionary::parse("boundaryField { }\n", "0/D"),
+                                       noPatches));
+}
+
+
 TEST(boundaryConditionsErrors, unknownType)
 {
     const IOerror err = errorReading(withField("    bottom { type fixedValu; value 0; }"));

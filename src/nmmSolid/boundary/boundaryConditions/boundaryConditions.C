@@ -269,8 +269,11 @@ void boundaryConditions::checkEntriesNamePatches
             + fileName_ + " names no patch of system/nmmMeshDict";
         const std::string hint = e->isPattern() ? "" : didYouMean(e->keyword(), names);
         if (!hint.empty()) msg += "; " + hint;
-        msg += "\n\nPatches are " + std::to_string(names.size()) + ":"
-            + patchList(geometry);
+        msg += names.empty()
+            ? "\n\nsystem/nmmMeshDict defines no patches: its boundaryField is"
+              " empty (boundaryField { })"
+            : "\n\nPatches are " + std::to_string(names.size()) + ":"
+              + patchList(geometry);
         throw e->error(msg);
     }
 }
