@@ -189,3 +189,53 @@ TEST(patternCache, anExtraMatrixIsSummedAsItsEntriesAppendedToTheList)
     expectIdentical(cache.assemble(n, n), direct(cache.triplets(), n));
     EXPECT_EQ(cache.made(), 3);
 }
+
+
+TEST(patternCache, onThreadsEachValueIsTheSameSumBitForBit)
+{
+    // The gather on OpenMP's threads against setFromTriplets, through
+    // reuse, moved positions and an extra matrix, as a step sequence has
+    const int n = 60;
+    auto positions = randomPositions(n, 2000, 24);
+    std::vector<Eigen::Triplet<double>> m;
+    for (const auto& [i, j] : randomPositions(n, 400, 25)) m.emplace_back(i, j, 0.5 + i - j);
+    sparseMatrix M(n, n);
+    M.setFromTriplets(m.begin(), m.end());
+
+    patternCache cache;
+    cache.threaded(true);
+    for (unsigned step = 26; step < 34; ++step)
+    {
+        if (step == 30) positions[101] = {0, n - 1};
+        fill(cache, positions, step);
+        const double c = 3.0/step;
+        std::vector<Eigen::Triplet<double>> appended = cache.triplets();
+        for (int j = 0; j < M.outerSize(); ++j)
+        {
+            for (sparseMatrix::InnerIterator it(M, j); it; ++it)
+            {
+                appended.emplace_back(int(it.row()), j, c*it.value());
+            }
+        }
+        expectIdentical(cache.assemble(n, n, &M, c), direct(appended, n));
+    }
+    // The moved position is found by the gather, and the pattern made anew
+    EXPECT_EQ(cache.made(), 2);
+    EXPECT_EQ(cache.reused(), 6);
+}
+
+
+TEST(patternCache, onThreadsAReusedPatternIsGathered)
+{
+    const int n = 50;
+    const auto positions = randomPositions(n, 1500, 35);
+    patternCache cache;
+    cache.threaded(true);
+    for (unsigned step = 36; step < 40; ++step)
+    {
+        fill(cache, positions, step);
+        expectIdentical(cache.assemble(n, n), direct(cache.triplets(), n));
+    }
+    EXPECT_EQ(cache.made(), 1);
+    EXPECT_EQ(cache.reused(), 3);
+}

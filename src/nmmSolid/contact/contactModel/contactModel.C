@@ -157,11 +157,13 @@ double contactModel::weight(double l) const
 }
 
 
-std::pair<contactModel::terms, contactModel::terms> contactModel::relativeTerms
+void contactModel::relativeTerms
 (
     const contactCandidate& c,
     const Eigen::Vector2d& n,
-    const Eigen::Vector2d& s
+    const Eigen::Vector2d& s,
+    terms& g,
+    terms& h
 ) const
 {
     const auto& loops = boundaries_.loops();
@@ -202,10 +204,8 @@ std::pair<contactModel::terms, contactModel::terms> contactModel::relativeTerms
         for (; j > 0 && all[j - 1].dof > t.dof; --j) all[j] = all[j - 1];
         all[j] = t;
     }
-    std::pair<terms, terms> merged;
-    auto& [g, h] = merged;
-    g.reserve(all.size());
-    h.reserve(all.size());
+    g.clear();
+    h.clear();
     for (const term& t : all)
     {
         if (!g.empty() && g.back().first == t.dof)
@@ -219,7 +219,6 @@ std::pair<contactModel::terms, contactModel::terms> contactModel::relativeTerms
             h.emplace_back(t.dof, t.alongS);
         }
     }
-    return merged;
 }
 
 
@@ -244,7 +243,10 @@ void contactModel::beginStep
     boundaries_.move(space_.cover(), space_.elements(), patchD);
     const auto& loops = boundaries_.loops();
     const std::vector<contactCandidate> found = search_.find(loops, threaded_);
-    active_.assign(found.size(), active{});
+    // The contacts' term lists are kept from step to step, written over:
+    // made anew for thousands of contacts, they took a tenth of a pile's
+    // contact detection
+    active_.resize(found.size());
     statesSteady_ = false;
     // Each contact's terms and springs on its own: on OpenMP's threads
     const long nFound = long(found.size());
@@ -253,6 +255,10 @@ void contactModel::beginStep
     {
         const contactCandidate& c = found[std::size_t(k)];
         active& a = active_[std::size_t(k)];
+        terms g = std::move(a.g), h = std::move(a.h);
+        a = active{};
+        a.g = std::move(g);
+        a.h = std::move(h);
         a.record.vertexLoop = c.vertexLoop;
         a.record.vertex = c.vertex;
         a.record.edgeLoop = c.edgeLoop;
@@ -269,7 +275,7 @@ void contactModel::beginStep
         a.n = vec(s.y(), -s.x());
         a.record.normal = a.n;
         a.record.point = loops[c.vertexLoop].vertices[c.vertex].x;
-        std::tie(a.g, a.h) = relativeTerms(c, a.n, s);
+        relativeTerms(c, a.n, s, a.g, a.h);
         const auto p = pressure_.find(a.record.key());
         if (p != pressure_.end()) a.pressureForce = p->second*c.length*thickness_;
     }

@@ -21,10 +21,6 @@ using matrix23 = Eigen::Matrix<double, 2, 3>;
 
 //- Nitsche's parameter over the bound that keeps an element's energy
 //  positive (see the class description)
-//- Fewer elements than this are assembled on one thread: a grain's
-//  dozen take microseconds, less than starting the threads
-constexpr long minThreadedElements = 2048;
-
 constexpr double nitscheSafety = 2;
 constexpr double nitscheBound = 8;
 //- Elements smaller than this part of their triangle take it as their
@@ -108,6 +104,7 @@ nmmAssembler::nmmAssembler
     {
         elementFirst_[std::size_t(e) + 1] = elementFirst_[std::size_t(e)] + products(e);
     }
+    setBodyForce();
 }
 
 
@@ -223,7 +220,7 @@ void nmmAssembler::addElements
     // order, and each entry is summed in the same order
     const label nE = label(pc_.nElements());
     std::vector<vector6> fe(static_cast<std::size_t>(nE));
-    #pragma omp parallel for schedule(static) if (threaded_ && nE >= minThreadedElements)
+    #pragma omp parallel for schedule(static) if (threadsElements())
     for (label e = 0; e < nE; ++e)
     {
         if (space_.fixedElement(e))
@@ -251,17 +248,33 @@ Eigen::Vector3d nmmAssembler::startStress(const fieldState& s, label e) const
 }
 
 
-void nmmAssembler::addBodyForce(Eigen::VectorXd& f) const
+void nmmAssembler::setBodyForce()
 {
     if (gravity_.isZero()) return;
-    for (label e = 0; e < label(pc_.nElements()); ++e)
+    const label nE = label(pc_.nElements());
+    elementBodyForce_.assign(std::size_t(nE), manifoldElement::vector6::Zero());
+    bodyForce_ = Eigen::VectorXd::Zero(Eigen::Index(nUnknowns()));
+    for (label e = 0; e < nE; ++e)
     {
         if (space_.fixedElement(e)) continue;
-        const vector6 fe = manifoldElement::bodyForce
+        elementBodyForce_[std::size_t(e)] = manifoldElement::bodyForce
         (
             pc_.elements()[e].moments, materials_[e].rho*gravity_, thickness_
         );
-        scatter(e, fe, f);
+        scatter(e, elementBodyForce_[std::size_t(e)], bodyForce_);
+    }
+}
+
+
+void nmmAssembler::addBodyForce(Eigen::VectorXd& f) const
+{
+    // Element by element onto f, not bodyForce_ added: each entry summed
+    // in the order it always was, so that a run repeats to the last digit
+    if (elementBodyForce_.empty()) return;
+    for (label e = 0; e < label(pc_.nElements()); ++e)
+    {
+        if (space_.fixedElement(e)) continue;
+        scatter(e, elementBodyForce_[std::size_t(e)], f);
     }
 }
 
@@ -471,8 +484,8 @@ void nmmAssembler::addNitsche
 
 Eigen::VectorXd nmmAssembler::externalForces(const fieldState& s, double t) const
 {
-    Eigen::VectorXd f = Eigen::VectorXd::Zero(Eigen::Index(nUnknowns()));
-    addBodyForce(f);
+    Eigen::VectorXd f = bodyForce_.size()
+        ? bodyForce_ : Eigen::VectorXd::Zero(Eigen::Index(nUnknowns()));
     const auto patchD = space_.patchDisplacements(s.D);
     addCouplingLoads(patchD, f);
     for (std::size_t i = 0; i < rules_.size(); ++i)

@@ -89,6 +89,61 @@ void patternCache::makePattern
     extraSlots_.resize(zeros.size() - listed);
     for (std::size_t k = listed; k < zeros.size(); ++k) extraSlots_[k - listed] = slotOf(zeros[k]);
     extraPattern_ = patternOf(extra);
+    bySlot_.clear();
+    if (threaded_) makeGather();
+}
+
+
+void patternCache::makeGather()
+{
+    // A counting sort of the triplets by slot keeps each slot's in list
+    // order
+    const std::size_t nnz = std::size_t(matrix_.nonZeros());
+    bySlotStart_.assign(nnz + 1, 0);
+    for (const int s : slots_) ++bySlotStart_[std::size_t(s) + 1];
+    for (std::size_t s = 0; s < nnz; ++s) bySlotStart_[s + 1] += bySlotStart_[s];
+    std::vector<int> next(bySlotStart_.begin(), bySlotStart_.end() - 1);
+    bySlot_.resize(slots_.size());
+    for (std::size_t t = 0; t < slots_.size(); ++t)
+    {
+        bySlot_[std::size_t(next[std::size_t(slots_[t])]++)] = int(t);
+    }
+    extraOfSlot_.assign(nnz, -1);
+    for (std::size_t k = 0; k < extraSlots_.size(); ++k)
+    {
+        extraOfSlot_[std::size_t(extraSlots_[k])] = int(k);
+    }
+}
+
+
+bool patternCache::gather(const sparseMatrix* extra, double c)
+{
+    // The extra matrix's entries in its storage order, as sameExtra saw
+    if (positions_.size() != triplets_.size() || (extra && !extra->isCompressed()))
+    {
+        return false;
+    }
+    if (bySlot_.size() != triplets_.size()) makeGather();
+    double* values = matrix_.valuePtr();
+    const double* extraValues = extra ? extra->valuePtr() : nullptr;
+    const long nnz = long(matrix_.nonZeros());
+    bool same = true;
+    #pragma omp parallel for schedule(static) reduction(&&: same)
+    for (long s = 0; s < nnz; ++s)
+    {
+        double v = 0.0;
+        for (int k = bySlotStart_[std::size_t(s)]; k < bySlotStart_[std::size_t(s) + 1]; ++k)
+        {
+            const std::size_t t = std::size_t(bySlot_[std::size_t(k)]);
+            const triplet& x = triplets_[t];
+            same = same && positions_[t].first == x.row() && positions_[t].second == x.col();
+            v += x.value();
+        }
+        const int e = extraOfSlot_[std::size_t(s)];
+        if (extraValues && e >= 0) v += c*extraValues[e];
+        values[s] = v;
+    }
+    return same;
 }
 
 
@@ -118,7 +173,12 @@ const patternCache::sparseMatrix& patternCache::assemble
 )
 {
     const bool kept = matrix_.rows() == rows && matrix_.cols() == cols && sameExtra(extra);
-    if (kept && scatter())
+    if (kept && threaded_ && gather(extra, c))
+    {
+        ++reused_;
+        return matrix_;
+    }
+    if (kept && !threaded_ && scatter())
     {
         ++reused_;
     }

@@ -59,8 +59,12 @@ std::vector<double> updatedLagrangian::updateStresses
 {
     const auto& els = space_.elements().elements();
     std::vector<double> rotations(els.size(), 0.0);
-    for (std::size_t e = 0; e < els.size(); ++e)
+    // Each element on its own: on OpenMP's threads as the assembly's
+    const long nE = long(els.size());
+    #pragma omp parallel for schedule(static) if (assembler_.threadsElements())
+    for (long n = 0; n < nE; ++n)
     {
+        const std::size_t e = std::size_t(n);
         const double dT = dTemperature.empty() ? 0.0 : dTemperature[e];
         // A fixed block's element neither strains nor turns; only a
         // temperature change stresses it
