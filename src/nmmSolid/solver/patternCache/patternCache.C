@@ -2,6 +2,10 @@
 
 #include <algorithm>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace nmm
 {
 
@@ -89,30 +93,47 @@ void patternCache::makePattern
     extraSlots_.resize(zeros.size() - listed);
     for (std::size_t k = listed; k < zeros.size(); ++k) extraSlots_[k - listed] = slotOf(zeros[k]);
     extraPattern_ = patternOf(extra);
-    bySlot_.clear();
+    gatherFor_ = 0;
     if (threaded_) makeGather();
 }
 
 
 void patternCache::makeGather()
 {
-    // A counting sort of the triplets by slot keeps each slot's in list
-    // order
+    // The values split into as many ranges as there are threads, each with
+    // about as many triplets, and each range's triplets listed in list
+    // order: a thread reads its list forwards and writes only its range
+    int nParts = 1;
+    #ifdef _OPENMP
+    nParts = std::max(1, omp_get_max_threads());
+    #endif
     const std::size_t nnz = std::size_t(matrix_.nonZeros());
-    bySlotStart_.assign(nnz + 1, 0);
-    for (const int s : slots_) ++bySlotStart_[std::size_t(s) + 1];
-    for (std::size_t s = 0; s < nnz; ++s) bySlotStart_[s + 1] += bySlotStart_[s];
-    std::vector<int> next(bySlotStart_.begin(), bySlotStart_.end() - 1);
-    bySlot_.resize(slots_.size());
+    std::vector<std::size_t> count(nnz, 0);
+    for (const int s : slots_) ++count[std::size_t(s)];
+    partStart_.assign(std::size_t(nParts) + 1, int(nnz));
+    partStart_[0] = 0;
+    std::size_t seen = 0;
+    int part = 1;
+    for (std::size_t s = 0; s < nnz && part < nParts; ++s)
+    {
+        if (seen*std::size_t(nParts) >= slots_.size()*std::size_t(part)) partStart_[std::size_t(part++)] = int(s);
+        seen += count[s];
+    }
+    for (; part < nParts; ++part) partStart_[std::size_t(part)] = int(nnz);
+    partTriplets_.assign(std::size_t(nParts), {});
     for (std::size_t t = 0; t < slots_.size(); ++t)
     {
-        bySlot_[std::size_t(next[std::size_t(slots_[t])]++)] = int(t);
+        const auto p = std::upper_bound(partStart_.begin(), partStart_.end(), slots_[t])
+            - partStart_.begin() - 1;
+        partTriplets_[std::size_t(p)].push_back(int(t));
     }
-    extraOfSlot_.assign(nnz, -1);
-    for (std::size_t k = 0; k < extraSlots_.size(); ++k)
+    partExtra_.resize(partStart_.size());
+    for (std::size_t p = 0; p < partStart_.size(); ++p)
     {
-        extraOfSlot_[std::size_t(extraSlots_[k])] = int(k);
+        partExtra_[p] = int(std::lower_bound(extraSlots_.begin(), extraSlots_.end(), partStart_[p])
+            - extraSlots_.begin());
     }
+    gatherFor_ = slots_.size();
 }
 
 
@@ -123,25 +144,27 @@ bool patternCache::gather(const sparseMatrix* extra, double c)
     {
         return false;
     }
-    if (bySlot_.size() != triplets_.size()) makeGather();
+    if (gatherFor_ != triplets_.size()) makeGather();
     double* values = matrix_.valuePtr();
     const double* extraValues = extra ? extra->valuePtr() : nullptr;
-    const long nnz = long(matrix_.nonZeros());
+    const long nParts = long(partTriplets_.size());
     bool same = true;
-    #pragma omp parallel for schedule(static) reduction(&&: same)
-    for (long s = 0; s < nnz; ++s)
+    #pragma omp parallel for schedule(static, 1) reduction(&&: same)
+    for (long p = 0; p < nParts; ++p)
     {
-        double v = 0.0;
-        for (int k = bySlotStart_[std::size_t(s)]; k < bySlotStart_[std::size_t(s) + 1]; ++k)
+        const std::size_t q = std::size_t(p);
+        std::fill(values + partStart_[q], values + partStart_[q + 1], 0.0);
+        for (const int t : partTriplets_[q])
         {
-            const std::size_t t = std::size_t(bySlot_[std::size_t(k)]);
-            const triplet& x = triplets_[t];
-            same = same && positions_[t].first == x.row() && positions_[t].second == x.col();
-            v += x.value();
+            const triplet& x = triplets_[std::size_t(t)];
+            const auto& at = positions_[std::size_t(t)];
+            same = same && at.first == x.row() && at.second == x.col();
+            values[slots_[std::size_t(t)]] += x.value();
         }
-        const int e = extraOfSlot_[std::size_t(s)];
-        if (extraValues && e >= 0) v += c*extraValues[e];
-        values[s] = v;
+        for (int k = partExtra_[q]; extraValues && k < partExtra_[q + 1]; ++k)
+        {
+            values[extraSlots_[std::size_t(k)]] += c*extraValues[k];
+        }
     }
     return same;
 }
