@@ -187,12 +187,18 @@ void contactBoundaries::move
 (
     const mathematicalCover& cover,
     const physicalCover& pc,
-    const Eigen::Matrix2Xd& patchD
+    const Eigen::Matrix2Xd& patchD,
+    bool threaded
 )
 {
-    for (auto& loop : loops_)
+    // Fewer loops than this move on one thread: a grain's take a few
+    // microseconds, less than starting the threads
+    constexpr long minThreadedLoops = 128;
+    const long nLoops = long(loops_.size());
+    #pragma omp parallel for schedule(dynamic, 16) if (threaded && nLoops >= minThreadedLoops)
+    for (long l = 0; l < nLoops; ++l)
     {
-        for (auto& v : loop.vertices) v.x = position(cover, pc, v, patchD);
+        for (auto& v : loops_[std::size_t(l)].vertices) v.x = position(cover, pc, v, patchD);
     }
 }
 

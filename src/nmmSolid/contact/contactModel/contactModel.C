@@ -240,7 +240,7 @@ void contactModel::beginStep
     bool start
 )
 {
-    boundaries_.move(space_.cover(), space_.elements(), patchD);
+    boundaries_.move(space_.cover(), space_.elements(), patchD, threaded_);
     const auto& loops = boundaries_.loops();
     const std::vector<contactCandidate> found = search_.find(loops, threaded_);
     // The contacts' term lists are kept from step to step, written over:

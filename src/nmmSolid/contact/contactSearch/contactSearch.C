@@ -46,27 +46,26 @@ double turnAt(const contactLoop& l, int i)
 }
 
 
-//- The boundary turns right at vertex i by more than the tolerance: the
-//  material surrounds it, so it cannot be the vertex of a contact
-bool isReflex(const contactLoop& l, int i, double angleTolerance)
-{
-    return turnAt(l, i) < -angleTolerance;
-}
-
-
 //- Fewer loop pairs than this are searched on one thread: a pair is a
 //  few microseconds, and a small model's threads would cost more
 constexpr long minThreadedPairs = 128;
 
 
-//- isReflex of every vertex of the loops, worked out when first asked: a
-//  vertex is looked at by every candidate of every pair its loop is in
+//- The turn (turnAt) of every vertex of the loops, worked out when first
+//  asked: a vertex is looked at by every candidate of every pair its loop
+//  is in, and the flatness of edges' ends by the tidying after them
 class reflexFlags
 {
     const std::vector<contactLoop>& loops_;
     const double angleTolerance_;
     std::vector<std::size_t> start_;
-    std::vector<signed char> flag_;     // -1: not worked out yet
+    std::vector<double> turn_;     // NaN: not worked out yet
+
+    double turn(int loop, int v) const
+    {
+        const double t = turn_[start_[std::size_t(loop)] + std::size_t(v)];
+        return std::isnan(t) ? turnAt(loops_[std::size_t(loop)], v) : t;
+    }
 
 public:
 
@@ -81,17 +80,19 @@ public:
         {
             start_.push_back(start_.back() + l.vertices.size());
         }
-        flag_.assign(start_.back(), -1);
+        turn_.assign(start_.back(), std::numeric_limits<double>::quiet_NaN());
     }
 
+    //- The boundary turns right at the vertex by more than the tolerance:
+    //  the material surrounds it, so it cannot be the vertex of a contact
     bool operator()(int loop, int v)
     {
-        signed char& f = flag_[start_[loop] + v];
-        if (f < 0) f = isReflex(loops_[loop], v, angleTolerance_);
-        return f;
+        double& t = turn_[start_[std::size_t(loop)] + std::size_t(v)];
+        if (std::isnan(t)) t = turnAt(loops_[std::size_t(loop)], v);
+        return t < -angleTolerance_;
     }
 
-    //- Work out the flags of every vertex of loop l now, so that the
+    //- Work out the turns of every vertex of loop l now, so that the
     //  pair searches of several threads only read them
     void workOut(std::size_t l)
     {
@@ -101,7 +102,7 @@ public:
     //- The boundary turns by less than the tolerance at the vertex
     bool flat(int loop, int v) const
     {
-        return std::abs(turnAt(loops_[loop], v)) <= angleTolerance_;
+        return std::abs(turn(loop, v)) <= angleTolerance_;
     }
 };
 
@@ -972,9 +973,11 @@ std::vector<contactCandidate> contactSearch::find
         }
     }
 
-    for (std::size_t l = 0; l < loops.size(); ++l)
+    const long nLoops = long(loops.size());
+    #pragma omp parallel for schedule(dynamic, 64) if (threaded && nLoops >= minThreadedPairs)
+    for (long l = 0; l < nLoops; ++l)
     {
-        if (boxed[l]) reflex.workOut(l);
+        if (boxed[std::size_t(l)]) reflex.workOut(std::size_t(l));
     }
     const edgeRuns runs(loops, boxed, distance_);
 
