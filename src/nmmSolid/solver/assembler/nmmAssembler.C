@@ -515,6 +515,25 @@ void nmmAssembler::buildMass()
     }
     M_.resize(Eigen::Index(nUnknowns()), Eigen::Index(nUnknowns()));
     M_.setFromTriplets(M.begin(), M.end());
+    massRows_ = M_;
+}
+
+
+Eigen::VectorXd nmmAssembler::massTimes(const Eigen::VectorXd& x) const
+{
+    Eigen::VectorXd y(M_.rows());
+    const long n = long(massRows_.rows());
+    #pragma omp parallel for schedule(static) if (threadsElements())
+    for (long i = 0; i < n; ++i)
+    {
+        double sum = 0;
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(massRows_, i); it; ++it)
+        {
+            sum += it.value()*x[it.index()];
+        }
+        y[i] = sum;
+    }
+    return y;
 }
 
 

@@ -45,8 +45,20 @@ updatedLagrangian::updatedLagrangian
     space_(space),
     assembler_(assembler),
     nBlocks_(nBlocks),
-    largeDisplacement_(largeDisplacement)
-{}
+    largeDisplacement_(largeDisplacement),
+    blockElements_(nBlocks)
+{
+    const auto& pc = space_.elements();
+    const auto& els = pc.elements();
+    for (std::size_t e = 0; e < els.size(); ++e)
+    {
+        blockElements_[els[e].block].push_back(e);
+        for (const label p : els[e].patches)
+        {
+            patchesOfOneBlock_ = patchesOfOneBlock_ && pc.patches()[p].block == els[e].block;
+        }
+    }
+}
 
 
 std::vector<double> updatedLagrangian::updateStresses
@@ -110,23 +122,32 @@ void updatedLagrangian::correctRotations
     std::vector<double> patchW(pc.nPatches(), 0.0), patchArea(pc.nPatches(), 0.0);
     const Eigen::Matrix2Xd patchV =
         rotateVelocity ? space_.patchDisplacements(s.V) : Eigen::Matrix2Xd();
-    for (std::size_t e = 0; e < els.size(); ++e)
+    // A patch is one block's, so each sum has one thread's terms
+    const long nB = long(nBlocks_);
+    #pragma omp parallel for schedule(dynamic, 16) if (patchesOfOneBlock_ && assembler_.threadsElements())
+    for (long b = 0; b < nB; ++b)
     {
-        const auto T = space_.currentTriangle(label(e), patchD0);
-        const double a = els[e].moments.area;
-        moment[els[e].block] += T*els[e].moments.w;
-        blockArea[els[e].block] += a;
-        for (int k = 0; k < 3; ++k)
+        for (const std::size_t e : blockElements_[std::size_t(b)])
         {
-            const label p = els[e].patches[k];
-            patchW[p] += a*rotations[e];
-            patchArea[p] += a;
-            if (rotateVelocity) momentum[els[e].block] += els[e].moments.w[k]*patchV.col(p);
+            const auto T = space_.currentTriangle(label(e), patchD0);
+            const double a = els[e].moments.area;
+            moment[std::size_t(b)] += T*els[e].moments.w;
+            blockArea[std::size_t(b)] += a;
+            for (int k = 0; k < 3; ++k)
+            {
+                const label p = els[e].patches[k];
+                patchW[p] += a*rotations[e];
+                patchArea[p] += a;
+                if (rotateVelocity) momentum[std::size_t(b)] += els[e].moments.w[k]*patchV.col(p);
+            }
         }
     }
 
-    for (std::size_t u = 0; u < pc.unknownPatches().size(); ++u)
+    const long nU = long(pc.unknownPatches().size());
+    #pragma omp parallel for schedule(static) if (assembler_.threadsElements())
+    for (long n = 0; n < nU; ++n)
     {
+        const std::size_t u = std::size_t(n);
         const label p = pc.unknownPatches()[u];
         const label b = pc.patches()[p].block;
         const double w = patchArea[p] > 0 ? patchW[p]/patchArea[p] : 0;
