@@ -551,22 +551,17 @@ nmmAssembler::system nmmAssembler::assemble
     // would be filled with zeros first, a tenth of the assembly's time)
     triplets& K = pattern_.triplets();
     K.resize(elementFirst_.back());
-    system sys;
-    sys.f = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
     const auto patchD = space_.patchDisplacements(s.D);
-    addElements(s, patchD, K, sys.f);
-    addBodyForce(sys.f);
-    addSegments(s, patchD, t1, K, sys.f);
-    if (!scheme.dynamic())
-    {
-        sys.K = pattern_.assemble(n, n);
-        return sys;
-    }
+    addElements(s, patchD, K, f);
+    addBodyForce(f);
+    addSegments(s, patchD, t1, K, f);
+    if (!scheme.dynamic()) return {pattern_.assemble(n, n), std::move(f)};
     // After the elements' terms, so each entry is their sum plus the mass
     // term, as K + c M would give
-    sys.K = pattern_.assemble(n, n, &M_, scheme.massFactor(dt));
-    sys.f += M_*(scheme.velocityFactor(dt)*s.V + scheme.accelerationFactor()*s.A);
-    return sys;
+    const sparseMatrix& Km = pattern_.assemble(n, n, &M_, scheme.massFactor(dt));
+    f += M_*(scheme.velocityFactor(dt)*s.V + scheme.accelerationFactor()*s.A);
+    return {Km, std::move(f)};
 }
 
 } // End namespace nmm
