@@ -610,6 +610,7 @@ Eigen::VectorXd contactModel::frictionRelease(long nUnknowns) const
 Eigen::VectorXd contactModel::pressureLoads(long nUnknowns) const
 {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(nUnknowns);
+    if (pressure_.empty()) return f;     // no coupled fluid
     for (const active& a : active_)
     {
         // Work of the pair of forces on the opening: F dgap, dgap = g dd
