@@ -515,12 +515,13 @@ void nmmAssembler::buildMass()
     }
     M_.resize(Eigen::Index(nUnknowns()), Eigen::Index(nUnknowns()));
     M_.setFromTriplets(M.begin(), M.end());
-    massRows_ = M_;
+    massRows_.resize(0, 0);
 }
 
 
 Eigen::VectorXd nmmAssembler::massTimes(const Eigen::VectorXd& x) const
 {
+    if (massRows_.rows() != M_.rows()) massRows_ = M_;
     Eigen::VectorXd y(M_.rows());
     const long n = long(massRows_.rows());
     #pragma omp parallel for schedule(static) if (threadsElements())

@@ -116,7 +116,10 @@ void patternCache::makeGather()
     int part = 1;
     for (std::size_t s = 0; s < nnz && part < nParts; ++s)
     {
-        if (seen*std::size_t(nParts) >= slots_.size()*std::size_t(part)) partStart_[std::size_t(part++)] = int(s);
+        if (seen*std::size_t(nParts) >= slots_.size()*std::size_t(part))
+        {
+            partStart_[std::size_t(part++)] = int(s);
+        }
         seen += count[s];
     }
     for (; part < nParts; ++part) partStart_[std::size_t(part)] = int(nnz);
