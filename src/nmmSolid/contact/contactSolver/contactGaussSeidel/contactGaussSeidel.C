@@ -25,6 +25,9 @@ namespace
 //  nmm::bodySystems)
 constexpr long minThreadedBlocks = 64;
 
+//- Fewer contacts than this are relaxed from a solution on one thread
+constexpr long minThreadedContacts = 512;
+
 //- Sweeps without a state change after which the forces are solved for
 //  directly, and how often a step may do so
 constexpr int quietSweeps = 3;
@@ -491,13 +494,18 @@ long contactGaussSeidel::statesOfSolution(std::vector<int>& flips, long& held)
     // solution, not to a neighbour's relaxation (a sweep from the
     // solution instead, each contact with the others' latest forces,
     // settled fewer steps of a dense pack under a platen)
+    // Each contact on its own (its forces, its state, its rows of the
+    // blocks): on OpenMP's threads
     contactModel& c = contacts();
-    const std::size_t nc = sides_.size();
-    std::vector<Eigen::Vector2d> rho(nc);
-    for (std::size_t i = 0; i < nc; ++i) rho[i] = othersOf(i);
-    long changes = 0;
-    for (std::size_t i = 0; i < nc; ++i)
+    const long nc = long(sides_.size());
+    std::vector<Eigen::Vector2d> rho(sides_.size());
+    #pragma omp parallel for schedule(static) if (nc >= minThreadedContacts)
+    for (long k = 0; k < nc; ++k) rho[std::size_t(k)] = othersOf(std::size_t(k));
+    long changes = 0, heldHere = 0;
+    #pragma omp parallel for schedule(dynamic, 64) reduction(+: changes, heldHere) if (nc >= minThreadedContacts)
+    for (long k = 0; k < nc; ++k)
     {
+        const std::size_t i = std::size_t(k);
         if (sides_[i][0][0] < 0) continue;
         const Eigen::Vector2d solved = lambdaOf(i);
         const contactState before = c.equations(i).state;
@@ -506,7 +514,7 @@ long contactGaussSeidel::statesOfSolution(std::vector<int>& flips, long& held)
         if (!changed) continue;
         if (++flips[i] > 2)
         {
-            ++held;
+            ++heldHere;
             // It keeps crossing the edge between two states as the others
             // follow it, and the answer is at the edge. At its friction
             // cone's (its stick solution outside, its slip solution
@@ -533,6 +541,7 @@ long contactGaussSeidel::statesOfSolution(std::vector<int>& flips, long& held)
         }
         ++changes;
     }
+    held += heldHere;
     return changes;
 }
 
