@@ -53,6 +53,37 @@ sparseMatrix direct(const std::vector<Eigen::Triplet<double>>& t, int n)
 }
 
 
+//- A fixed matrix (the mass matrix's role) of count entries, inside and
+//  outside a list's pattern
+sparseMatrix extraMatrix(int n, int count, unsigned seed, double offset)
+{
+    std::vector<Eigen::Triplet<double>> m;
+    for (const auto& [i, j] : randomPositions(n, count, seed)) m.emplace_back(i, j, offset + i - j);
+    sparseMatrix M(n, n);
+    M.setFromTriplets(m.begin(), m.end());
+    return M;
+}
+
+
+//- The list with c times the entries of M appended, in M's order
+std::vector<Eigen::Triplet<double>> withExtra
+(
+    std::vector<Eigen::Triplet<double>> t,
+    const sparseMatrix& M,
+    double c
+)
+{
+    for (int j = 0; j < M.outerSize(); ++j)
+    {
+        for (sparseMatrix::InnerIterator it(M, j); it; ++it)
+        {
+            t.emplace_back(int(it.row()), j, c*it.value());
+        }
+    }
+    return t;
+}
+
+
 void expectIdentical(const sparseMatrix& a, const sparseMatrix& b)
 {
     ASSERT_EQ(a.rows(), b.rows());
@@ -67,6 +98,24 @@ void expectIdentical(const sparseMatrix& a, const sparseMatrix& b)
         // Exactly equal: the runs must not depend on the path
         ASSERT_EQ(a.valuePtr()[k], b.valuePtr()[k]) << "entry " << k;
     }
+}
+
+
+//- The cache's sum of a list filled from seed plus c M, against
+//  setFromTriplets of the list with c M's entries appended
+void expectSumWithExtra
+(
+    patternCache& cache,
+    const std::vector<std::pair<int, int>>& positions,
+    unsigned seed,
+    const sparseMatrix& M,
+    double c
+)
+{
+    const int n = int(M.rows());
+    fill(cache, positions, seed);
+    const auto appended = withExtra(cache.triplets(), M, c);
+    expectIdentical(cache.assemble(n, n, &M, c), direct(appended, n));
 }
 
 } // End anonymous namespace
@@ -87,19 +136,25 @@ TEST(patternCache, sumsAsSetFromTripletsBitForBit)
 
 TEST(patternCache, theSamePositionsReuseThePatternWithNewValues)
 {
-    const int n = 40;
-    const auto positions = randomPositions(n, 900, 3);
-    patternCache cache;
-    fill(cache, positions, 4);
-    cache.assemble(n, n);
-    for (unsigned step = 5; step < 8; ++step)
+    // On one thread, and on OpenMP's (the values split among them)
+    for (const bool threaded : {false, true})
     {
-        fill(cache, positions, step);
-        const sparseMatrix& A = cache.assemble(n, n);
-        expectIdentical(A, direct(cache.triplets(), n));
+        SCOPED_TRACE(threaded ? "on threads" : "on one thread");
+        const int n = 40;
+        const auto positions = randomPositions(n, 900, 3);
+        patternCache cache;
+        cache.threaded(threaded);
+        fill(cache, positions, 4);
+        cache.assemble(n, n);
+        for (unsigned step = 5; step < 8; ++step)
+        {
+            fill(cache, positions, step);
+            const sparseMatrix& A = cache.assemble(n, n);
+            expectIdentical(A, direct(cache.triplets(), n));
+        }
+        EXPECT_EQ(cache.made(), 1);
+        EXPECT_EQ(cache.reused(), 3);
     }
-    EXPECT_EQ(cache.made(), 1);
-    EXPECT_EQ(cache.reused(), 3);
 }
 
 
@@ -147,27 +202,12 @@ TEST(patternCache, anExtraMatrixIsSummedAsItsEntriesAppendedToTheList)
 {
     const int n = 40;
     const auto positions = randomPositions(n, 900, 15);
-    // A fixed matrix (the mass matrix's role): entries inside and outside
-    // the list's pattern
-    std::vector<Eigen::Triplet<double>> m;
-    for (const auto& [i, j] : randomPositions(n, 300, 16)) m.emplace_back(i, j, 0.25 + i - j);
-    sparseMatrix M(n, n);
-    M.setFromTriplets(m.begin(), m.end());
+    sparseMatrix M = extraMatrix(n, 300, 16, 0.25);
 
     patternCache cache;
     for (unsigned step = 17; step < 21; ++step)
     {
-        fill(cache, positions, step);
-        const double c = 1.0/step;
-        std::vector<Eigen::Triplet<double>> appended = cache.triplets();
-        for (int j = 0; j < M.outerSize(); ++j)
-        {
-            for (sparseMatrix::InnerIterator it(M, j); it; ++it)
-            {
-                appended.emplace_back(int(it.row()), j, c*it.value());
-            }
-        }
-        expectIdentical(cache.assemble(n, n, &M, c), direct(appended, n));
+        expectSumWithExtra(cache, positions, step, M, 1.0/step);
     }
     EXPECT_EQ(cache.made(), 1);
     EXPECT_EQ(cache.reused(), 3);
@@ -175,16 +215,7 @@ TEST(patternCache, anExtraMatrixIsSummedAsItsEntriesAppendedToTheList)
     // Another extra pattern, and none: each a new pattern
     M.coeffRef(n - 1, 0) += 1;
     M.makeCompressed();
-    fill(cache, positions, 22);
-    std::vector<Eigen::Triplet<double>> appended = cache.triplets();
-    for (int j = 0; j < M.outerSize(); ++j)
-    {
-        for (sparseMatrix::InnerIterator it(M, j); it; ++it)
-        {
-            appended.emplace_back(int(it.row()), j, 2*it.value());
-        }
-    }
-    expectIdentical(cache.assemble(n, n, &M, 2), direct(appended, n));
+    expectSumWithExtra(cache, positions, 22, M, 2);
     fill(cache, positions, 23);
     expectIdentical(cache.assemble(n, n), direct(cache.triplets(), n));
     EXPECT_EQ(cache.made(), 3);
@@ -193,49 +224,21 @@ TEST(patternCache, anExtraMatrixIsSummedAsItsEntriesAppendedToTheList)
 
 TEST(patternCache, onThreadsEachValueIsTheSameSumBitForBit)
 {
-    // The gather on OpenMP's threads against setFromTriplets, through
-    // reuse, moved positions and an extra matrix, as a step sequence has
+    // The sums on OpenMP's threads against setFromTriplets, through
+    // reuse, a moved position and an extra matrix, as a run's steps have
     const int n = 60;
     auto positions = randomPositions(n, 2000, 24);
-    std::vector<Eigen::Triplet<double>> m;
-    for (const auto& [i, j] : randomPositions(n, 400, 25)) m.emplace_back(i, j, 0.5 + i - j);
-    sparseMatrix M(n, n);
-    M.setFromTriplets(m.begin(), m.end());
+    const sparseMatrix M = extraMatrix(n, 400, 25, 0.5);
 
     patternCache cache;
     cache.threaded(true);
     for (unsigned step = 26; step < 34; ++step)
     {
         if (step == 30) positions[101] = {0, n - 1};
-        fill(cache, positions, step);
-        const double c = 3.0/step;
-        std::vector<Eigen::Triplet<double>> appended = cache.triplets();
-        for (int j = 0; j < M.outerSize(); ++j)
-        {
-            for (sparseMatrix::InnerIterator it(M, j); it; ++it)
-            {
-                appended.emplace_back(int(it.row()), j, c*it.value());
-            }
-        }
-        expectIdentical(cache.assemble(n, n, &M, c), direct(appended, n));
+        expectSumWithExtra(cache, positions, step, M, 3.0/step);
     }
     // The moved position is found by the gather, and the pattern made anew
     EXPECT_EQ(cache.made(), 2);
     EXPECT_EQ(cache.reused(), 6);
 }
 
-
-TEST(patternCache, onThreadsAReusedPatternIsGathered)
-{
-    const int n = 50;
-    const auto positions = randomPositions(n, 1500, 35);
-    patternCache cache;
-    cache.threaded(true);
-    for (unsigned step = 36; step < 40; ++step)
-    {
-        fill(cache, positions, step);
-        expectIdentical(cache.assemble(n, n), direct(cache.triplets(), n));
-    }
-    EXPECT_EQ(cache.made(), 1);
-    EXPECT_EQ(cache.reused(), 3);
-}
