@@ -125,6 +125,7 @@ void nmmSolidModel::createContacts()
     p.quasiStatic = p.dynamic && !parts_.scheme->keepsVelocity();
     parts_.contactMethod->setUp(std::move(p));
     assembler_->threaded(parts_.contactMethod->solvesBodyByBody());
+    space_->threaded(parts_.contactMethod->solvesBodyByBody());
 }
 
 

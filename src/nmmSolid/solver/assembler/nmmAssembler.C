@@ -561,7 +561,7 @@ nmmAssembler::system nmmAssembler::assemble
     // After the elements' terms, so each entry is their sum plus the mass
     // term, as K + c M would give
     const sparseMatrix& Km = pattern_.assemble(n, n, &M_, scheme.massFactor(dt));
-    f += M_*(scheme.velocityFactor(dt)*s.V + scheme.accelerationFactor()*s.A);
+    f += massTimes(scheme.velocityFactor(dt)*s.V + scheme.accelerationFactor()*s.A);
     return {Km, std::move(f)};
 }
 

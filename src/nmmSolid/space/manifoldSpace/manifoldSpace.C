@@ -55,13 +55,20 @@ Eigen::VectorXd manifoldSpace::elementDisplacements(label e, const Eigen::Vector
 
 Eigen::Matrix2Xd manifoldSpace::patchDisplacements(const Eigen::VectorXd& D) const
 {
-    Eigen::Matrix2Xd d = Eigen::Matrix2Xd::Zero(2, pc_.nPatches());
-    for (label p = 0; p < label(pc_.nPatches()); ++p)
+    // Fewer patches than this on one thread: a few grains' take less
+    // than starting the threads
+    constexpr long minThreadedPatches = 4096;
+    const long nP = long(pc_.nPatches());
+    Eigen::Matrix2Xd d(2, nP);
+    #pragma omp parallel for schedule(static) if (threaded_ && nP >= minThreadedPatches)
+    for (long p = 0; p < nP; ++p)
     {
-        for (auto t = pc_.extensionBegin(p); t != pc_.extensionEnd(p); ++t)
+        Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+        for (auto t = pc_.extensionBegin(label(p)); t != pc_.extensionEnd(label(p)); ++t)
         {
-            d.col(p) += t->coefficient*D.segment<2>(2*t->unknownPatch);
+            sum += t->coefficient*D.segment<2>(2*t->unknownPatch);
         }
+        d.col(p) = sum;
     }
     return d;
 }
