@@ -5,6 +5,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace nmm
 {
 
@@ -207,6 +211,64 @@ void nmmAssembler::scatter(label e, const vector6& fe, Eigen::VectorXd& f) const
 }
 
 
+void nmmAssembler::scatter(const std::vector<vector6>& fe, Eigen::VectorXd& f) const
+{
+    if (vectorParts_.empty())
+    {
+        for (label e = 0; e < label(fe.size()); ++e) scatter(e, fe[std::size_t(e)], f);
+        return;
+    }
+    const long nParts = long(vectorParts_.size());
+    #pragma omp parallel for schedule(static, 1)
+    for (long p = 0; p < nParts; ++p)
+    {
+        for (const auto& [e, k] : vectorParts_[std::size_t(p)])
+        {
+            const auto& a = space_.dofTerms(e).begin()[k];
+            f[a.dof] += a.coefficient*fe[std::size_t(e)][a.local];
+        }
+    }
+}
+
+
+void nmmAssembler::makeVectorParts()
+{
+    // The unknowns split into as many ranges as there are threads, each
+    // written about as often
+    vectorParts_.clear();
+    if (!threadsElements()) return;
+    int nParts = 1;
+    #ifdef _OPENMP
+    nParts = std::max(1, omp_get_max_threads());
+    #endif
+    const label nE = label(pc_.nElements());
+    std::vector<std::size_t> writes(nUnknowns() + 1, 0);
+    std::size_t total = 0;
+    for (label e = 0; e < nE; ++e)
+    {
+        for (const auto& a : space_.dofTerms(e)) ++writes[std::size_t(a.dof)];
+        total += space_.dofTerms(e).size();
+    }
+    std::vector<label> partOf(nUnknowns(), 0);
+    std::size_t seen = 0;
+    for (std::size_t dof = 0; dof < nUnknowns(); ++dof)
+    {
+        partOf[dof] = label(std::min<std::size_t>(std::size_t(nParts) - 1,
+            total ? seen*std::size_t(nParts)/total : 0));
+        seen += writes[dof];
+    }
+    vectorParts_.assign(std::size_t(nParts), {});
+    for (label e = 0; e < nE; ++e)
+    {
+        int k = 0;
+        for (const auto& a : space_.dofTerms(e))
+        {
+            vectorParts_[std::size_t(partOf[std::size_t(a.dof)])].emplace_back(e, k++);
+        }
+    }
+}
+
+
 void nmmAssembler::addElements
 (
     const fieldState& s,
@@ -235,7 +297,7 @@ void nmmAssembler::addElements
                 K.data() + elementFirst_[std::size_t(e)]);
         fe[std::size_t(e)] = -area*thickness_*B.transpose()*startStress(s, e);
     }
-    for (label e = 0; e < nE; ++e) scatter(e, fe[std::size_t(e)], f);
+    scatter(fe, f);
 }
 
 
@@ -270,12 +332,7 @@ void nmmAssembler::addBodyForce(Eigen::VectorXd& f) const
 {
     // Element by element onto f, not bodyForce_ added: each entry summed
     // in the order it always was, so that a run repeats to the last digit
-    if (elementBodyForce_.empty()) return;
-    for (label e = 0; e < label(pc_.nElements()); ++e)
-    {
-        if (space_.fixedElement(e)) continue;
-        scatter(e, elementBodyForce_[std::size_t(e)], f);
-    }
+    if (!elementBodyForce_.empty()) scatter(elementBodyForce_, f);
 }
 
 

@@ -25,7 +25,7 @@ namespace
 //  nmm::bodySystems)
 constexpr long minThreadedBlocks = 64;
 
-//- Fewer contacts than this are relaxed from a solution on one thread
+//- Fewer contacts than this are passed over on one thread
 constexpr long minThreadedContacts = 512;
 
 //- Sweeps without a state change after which the forces are solved for
@@ -224,9 +224,13 @@ void contactGaussSeidel::carry(const std::map<std::string, double>& values)
 
 long contactGaussSeidel::includeClosing(const Eigen::VectorXd& dd)
 {
+    // Each contact on its own: on OpenMP's threads
     long joined = 0;
-    for (std::size_t i = 0; i < included_.size(); ++i)
+    const long nc = long(included_.size());
+    #pragma omp parallel for schedule(static) reduction(+: joined) if (nc >= minThreadedContacts)
+    for (long k = 0; k < nc; ++k)
     {
+        const std::size_t i = std::size_t(k);
         if (included_[i]) continue;
         if (contacts().startGap(i) + along(contacts().springTerms(2*i), dd) < 0)
         {
@@ -294,6 +298,7 @@ void contactGaussSeidel::buildContactSpace(bool fresh)
     for (long k = 0; k < nBuild; ++k) buildBlock(blocks_[build[std::size_t(k)]]);
 
     Wii_.assign(nc, Eigen::Matrix2d::Zero());
+    #pragma omp parallel for schedule(static) if (long(nc) >= minThreadedContacts)
     for (std::size_t i = 0; i < nc; ++i)
     {
         for (const auto& [k, at] : sides_[i])
