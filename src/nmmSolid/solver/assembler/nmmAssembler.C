@@ -1,13 +1,11 @@
 #include "nmmSolid/solver/assembler/nmmAssembler.H"
 
+#include "nmmSolid/solver/threadRanges/threadRanges.H"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace nmm
 {
@@ -233,37 +231,24 @@ void nmmAssembler::scatter(const std::vector<vector6>& fe, Eigen::VectorXd& f) c
 
 void nmmAssembler::makeVectorParts()
 {
-    // The unknowns split into as many ranges as there are threads, each
-    // written about as often
     vectorParts_.clear();
     if (!threadsElements()) return;
-    int nParts = 1;
-    #ifdef _OPENMP
-    nParts = std::max(1, omp_get_max_threads());
-    #endif
     const label nE = label(pc_.nElements());
-    std::vector<std::size_t> writes(nUnknowns() + 1, 0);
-    std::size_t total = 0;
+    std::vector<std::size_t> writes(nUnknowns(), 0);
     for (label e = 0; e < nE; ++e)
     {
         for (const auto& a : space_.dofTerms(e)) ++writes[std::size_t(a.dof)];
-        total += space_.dofTerms(e).size();
     }
-    std::vector<label> partOf(nUnknowns(), 0);
-    std::size_t seen = 0;
-    for (std::size_t dof = 0; dof < nUnknowns(); ++dof)
-    {
-        partOf[dof] = label(std::min<std::size_t>(std::size_t(nParts) - 1,
-            total ? seen*std::size_t(nParts)/total : 0));
-        seen += writes[dof];
-    }
-    vectorParts_.assign(std::size_t(nParts), {});
+    const std::vector<std::size_t> start = threadRanges(writes);
+    vectorParts_.assign(start.size() - 1, {});
     for (label e = 0; e < nE; ++e)
     {
         int k = 0;
         for (const auto& a : space_.dofTerms(e))
         {
-            vectorParts_[std::size_t(partOf[std::size_t(a.dof)])].emplace_back(e, k++);
+            const auto p = std::upper_bound(start.begin(), start.end(), std::size_t(a.dof))
+                - start.begin() - 1;
+            vectorParts_[std::size_t(p)].emplace_back(e, k++);
         }
     }
 }

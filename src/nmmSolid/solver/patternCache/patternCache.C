@@ -1,10 +1,8 @@
 #include "nmmSolid/solver/patternCache/patternCache.H"
 
-#include <algorithm>
+#include "nmmSolid/solver/threadRanges/threadRanges.H"
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
+#include <algorithm>
 
 namespace nmm
 {
@@ -78,30 +76,13 @@ void patternCache::makePattern
 
 void patternCache::makeGather()
 {
-    // The values split into as many ranges as there are threads, each with
-    // about as many triplets, and each range's triplets listed in list
-    // order: a thread reads its list forwards and writes only its range
-    int nParts = 1;
-    #ifdef _OPENMP
-    nParts = std::max(1, omp_get_max_threads());
-    #endif
-    const std::size_t nnz = std::size_t(matrix_.nonZeros());
-    std::vector<std::size_t> count(nnz, 0);
+    // Each range's triplets listed in list order: a thread reads its list
+    // forwards and writes only its range
+    std::vector<std::size_t> count(std::size_t(matrix_.nonZeros()), 0);
     for (const int s : slots_) ++count[std::size_t(s)];
-    partStart_.assign(std::size_t(nParts) + 1, int(nnz));
-    partStart_[0] = 0;
-    std::size_t seen = 0;
-    int part = 1;
-    for (std::size_t s = 0; s < nnz && part < nParts; ++s)
-    {
-        if (seen*std::size_t(nParts) >= slots_.size()*std::size_t(part))
-        {
-            partStart_[std::size_t(part++)] = int(s);
-        }
-        seen += count[s];
-    }
-    for (; part < nParts; ++part) partStart_[std::size_t(part)] = int(nnz);
-    partTriplets_.assign(std::size_t(nParts), {});
+    const std::vector<std::size_t> start = threadRanges(count);
+    partStart_.assign(start.begin(), start.end());
+    partTriplets_.assign(start.size() - 1, {});
     for (std::size_t t = 0; t < slots_.size(); ++t)
     {
         const auto p = std::upper_bound(partStart_.begin(), partStart_.end(), slots_[t])
