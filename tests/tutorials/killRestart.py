@@ -9,9 +9,10 @@ uninterrupted run:
 The case is tutorials/contact/grainsInBox, shortened and written often:
 grains falling into a box, contacts opening, sticking and sliding, steps
 cut and grown. It is run once without interruption, and once killed with
-SIGKILL at least 10 times (after one or two new write times and a moment
-drawn from a seeded generator, or while a time directory is being
-written: at least three times) and
+SIGKILL at least 10 times (after one or two new write times and a drawn
+fraction of the wall time one write interval takes, both from a seeded
+generator, or while a time directory is being written: at least three
+times) and
 restarted with startFrom latestTime after each kill, until it ends.
 
   - after every kill, every completed write time is intact: each time
@@ -144,6 +145,7 @@ def runKilled(case, env, rng, failures):
     """Restart after SIGKILL until the run ends by itself; the kills."""
     kills, whileWriting = 0, 0
     checked = set()
+    interval = 0.01  # until two new write times have been seen
     for attempt in range(200):
         log = open(case/("log.nmmSolidFoam.%d" % attempt), "w")
         started = time.time()
@@ -153,15 +155,26 @@ def runKilled(case, env, rng, failures):
         # that a fast machine is killed as often as a slow one: after one
         # or two new write times and a random moment more, or as soon as
         # a time directory is being written
+        # a moment more: a drawn fraction of the wall time one write
+        # interval took, so that it too is measured in progress; a
+        # moment in seconds let a fast run end before its tenth kill
         atWrite = kills < minKills and kills % 3 == 2
-        target = len(timeDirs(case)) + rng.randint(1, 2)
-        extra = rng.uniform(0.0, 0.05)
+        seen = len(timeDirs(case))
+        target = seen + rng.randint(1, 2)
+        fraction = rng.uniform(0.0, 1.0)
+        newWrites = []
         deadline = None
         killed = False
         while proc.poll() is None:
+            count = len(timeDirs(case))
+            if count > seen:
+                seen = count
+                newWrites.append(time.monotonic())
+                if len(newWrites) >= 2:
+                    interval = newWrites[-1] - newWrites[-2]
             if kills < minKills and not atWrite and deadline is None \
-                    and len(timeDirs(case)) >= target:
-                deadline = time.monotonic() + extra
+                    and count >= target:
+                deadline = time.monotonic() + fraction*interval
             due = writing(case, started) if atWrite else \
                 deadline is not None and time.monotonic() >= deadline
             if kills < minKills and due:
