@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <tuple>
+#include <unordered_map>
 
 namespace nmm
 {
@@ -125,6 +125,18 @@ std::vector<int> slotsIn
     }
     return slots;
 }
+
+
+// A clique looked up by its dofs (withPattern)
+struct dofsHash
+{
+    std::size_t operator()(const std::vector<int>& dofs) const noexcept
+    {
+        std::size_t h = dofs.size();
+        for (const int d : dofs) h = h*1000003u ^ std::size_t(d);
+        return h;
+    }
+};
 
 } // End anonymous namespace
 
@@ -407,21 +419,26 @@ contactModel::sparseMatrix contactModel::withPattern(const sparseMatrix& K)
     }
     // A contact's terms couple all its unknowns (their dofs, sorted and
     // unique): a clique, shared by its normal and shear terms and by
-    // the contacts between the same elements
-    std::map<std::vector<int>, int> index;
-    std::vector<int> keys;
+    // the contacts between the same elements. Found by hash, the dofs
+    // copied only for a new clique: an ordered map of vectors, one made
+    // per term, was a tenth of the pattern's time in a marble's step
+    std::unordered_map<std::vector<int>, int, dofsHash> index;
+    index.reserve(2*active_.size());
+    std::vector<std::vector<int>> cliques;
+    std::vector<int> keys, dofs;
     std::vector<std::array<int, 2>> cliqueOf(active_.size());
     const auto cliqueOfTerms = [&](const terms& t)
     {
-        std::vector<int> dofs(t.size());
+        dofs.resize(t.size());
         for (std::size_t i = 0; i < t.size(); ++i) dofs[i] = t[i].first;
-        const auto [it, fresh] = index.try_emplace(std::move(dofs), int(index.size()));
-        if (fresh)
-        {
-            keys.push_back(int(it->first.size()));
-            keys.insert(keys.end(), it->first.begin(), it->first.end());
-        }
-        return it->second;
+        const auto found = index.find(dofs);
+        if (found != index.end()) return found->second;
+        const int c = int(cliques.size());
+        index.emplace(dofs, c);
+        keys.push_back(int(dofs.size()));
+        keys.insert(keys.end(), dofs.begin(), dofs.end());
+        cliques.push_back(dofs);
+        return c;
     };
     for (std::size_t c = 0; c < active_.size(); ++c)
     {
@@ -442,7 +459,7 @@ contactModel::sparseMatrix contactModel::withPattern(const sparseMatrix& K)
     }
     else
     {
-        makeStepPattern(K, index);
+        makeStepPattern(K, cliques);
         cliqueKeys_ = std::move(keys);
     }
 
@@ -458,7 +475,7 @@ contactModel::sparseMatrix contactModel::withPattern(const sparseMatrix& K)
 void contactModel::makeStepPattern
 (
     const sparseMatrix& K,
-    const std::map<std::vector<int>, int>& cliques
+    const std::vector<std::vector<int>>& cliques
 )
 {
     // Column by column: K's rows and those of every clique holding the
@@ -467,14 +484,14 @@ void contactModel::makeStepPattern
     // entries three times, a quarter of a wall's step
     const int columns = int(K.cols());
     std::vector<int> start(std::size_t(columns) + 1, 0);
-    for (const auto& [dofs, c] : cliques)
+    for (const auto& dofs : cliques)
     {
         for (const int j : dofs) ++start[std::size_t(j) + 1];
     }
     for (int j = 0; j < columns; ++j) start[std::size_t(j) + 1] += start[std::size_t(j)];
     std::vector<const std::vector<int>*> holding(std::size_t(start.back()));
     std::vector<int> next(start.begin(), start.end() - 1);
-    for (const auto& [dofs, c] : cliques)
+    for (const auto& dofs : cliques)
     {
         for (const int j : dofs) holding[std::size_t(next[std::size_t(j)]++)] = &dofs;
     }
@@ -511,9 +528,10 @@ void contactModel::makeStepPattern
     // so one walk down each column
     cliqueSlots_.assign(cliques.size(), {});
     const int* rows = stepMatrix_.innerIndexPtr();
-    for (const auto& [dofs, c] : cliques)
+    for (std::size_t c = 0; c < cliques.size(); ++c)
     {
-        std::vector<int>& slots = cliqueSlots_[std::size_t(c)];
+        const std::vector<int>& dofs = cliques[c];
+        std::vector<int>& slots = cliqueSlots_[c];
         slots.resize(dofs.size()*dofs.size());
         std::size_t n = 0;
         for (const int j : dofs)

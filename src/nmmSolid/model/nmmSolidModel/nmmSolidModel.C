@@ -124,8 +124,12 @@ void nmmSolidModel::createContacts()
     p.dynamic = parts_.scheme->dynamic();
     p.quasiStatic = p.dynamic && !parts_.scheme->keepsVelocity();
     parts_.contactMethod->setUp(std::move(p));
-    assembler_->threaded(parts_.contactMethod->solvesBodyByBody());
-    space_->threaded(parts_.contactMethod->solvesBodyByBody());
+    // The loops over elements, patches and contacts on OpenMP's threads,
+    // whichever method solves: CHOLMOD's BLAS is serial (Debian's
+    // libopenblas0-serial), so nothing else runs on the other core
+    // between its calls
+    assembler_->threaded(true);
+    space_->threaded(true);
 }
 
 

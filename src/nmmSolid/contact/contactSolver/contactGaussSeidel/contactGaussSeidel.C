@@ -88,13 +88,6 @@ contactGaussSeidel::contactGaussSeidel(const dictionary& d)
 }
 
 
-void contactGaussSeidel::setUp(problem p)
-{
-    penaltyOpenClose::setUp(std::move(p));
-    contacts().threaded(true);
-}
-
-
 bool contactGaussSeidel::solve
 (
     const nmmAssembler::system& sys,

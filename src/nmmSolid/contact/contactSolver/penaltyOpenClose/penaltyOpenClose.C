@@ -118,6 +118,7 @@ void penaltyOpenClose::setUp(problem p)
         *p.space, *p.geometry, std::move(*p.laws), std::move(p.materialOfBlock), s,
         p.thickness
     );
+    contacts_->threaded(true);
 }
 
 
