@@ -742,106 +742,124 @@ double contactModel::stepLength
 
 contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
 {
+    // Each contact on its own, on OpenMP's threads; the counts summed
+    // after, in the contacts' order, so that their sums are one thread's
+    const long n = long(active_.size());
+    std::vector<contactTally> tally(active_.size());
+    #pragma omp parallel for schedule(dynamic, 64) if (threaded_ && n >= minThreadedContacts)
+    for (long k = 0; k < n; ++k) tally[std::size_t(k)] = updateOne(active_[std::size_t(k)], dd);
     iterationCounts counts;
-    for (active& a : active_)
+    for (const contactTally& c : tally)
     {
-        contactRecord& r = a.record;
-        a.dn = along(a.g, dd);
-        a.ds = along(a.h, dd);
-        r.gap = a.gap0 + a.dn;
-
-        contactQuery q;
-        q.state = r.state;
-        q.bondIntact = r.bondIntact;
-        q.gap = r.gap;
-        // An open contact gets the trial forces of closing over the whole
-        // step, so that one that closes while slipping starts sliding
-        q.Fn = r.multiplier - a.kN*r.gap;
-        q.Fs = a.shearForce0 - a.kS*a.ds;
-        q.length = r.length*thickness_;
-        // A coupled fluid's pressure is a load on the faces (pressureLoads),
-        // so the springs carry the rest, the effective normal force Fn - p L
-        // of the paper's Eq. 8, which the law compares with its strengths
-        // A slip within the touch tolerance is rounding: its sign must not
-        // turn the friction of a contact at rest
-        const bool slips = std::abs(a.ds) > settings_.touchTolerance;
-        q.shearDisplacement = r.state != contactState::bonded && slips ? a.ds : 0;
-
-        contactDecision d = a.law->decide(q);
-        if (holdFriction_ && d.state == contactState::sliding)
-        {
-            d.state = contactState::bonded;
-            d.frictionForce = 0;
-        }
-        if
-        (
-            r.state == contactState::sliding && d.state == contactState::sliding
-         && slips && a.friction*a.ds > 0
-        )
-        {
-            // The friction load drove the vertex backwards: it overshoots
-            // the stop within the step, so the contact sticks (Shi's rule
-            // for a reversed slip). It stops where the slip reversed, at
-            // the step's start, with the friction force in its spring: the
-            // spring force the step started with may lie outside the cone
-            // the step ends with, and would make it slide again
-            d.state = contactState::bonded;
-            a.shearForce0 = a.friction;
-            a.locked = true;
-        }
-        else if
-        (
-            a.locked && r.state == contactState::bonded
-         && d.state == contactState::sliding
-         && std::abs(q.Fs) <= (1 + frictionTolerance)*std::abs(d.frictionForce)
-        )
-        {
-            // Locked at the friction force, it stays within the friction
-            // tolerance of the cone rather than slide and reverse again
-            d.state = contactState::bonded;
-            d.frictionForce = 0;
-        }
-        if (d.state != r.state)
-        {
-            ++counts.changes;
-            ++a.changes;
-            if (a.changes >= maxChangesPerStep) ++counts.chattering;
-        }
-        if (d.bondBroken)
-        {
-            ++counts.bondsBroken;
-            r.bondBroken = true;
-        }
-        r.normalForce = isClosed(r.state) ? q.Fn : 0;
-        r.shearForce = r.state == contactState::sliding ? a.friction
-                     : r.state == contactState::bonded ? q.Fs : 0;
-        // Friction needs the normal force of a closed solve: the trial
-        // force of an open contact can be any multiple of the real one
-        double friction = r.state == contactState::open ? 0.0 : d.frictionForce;
-        if (d.state == contactState::sliding && d.state == r.state)
-        {
-            friction = a.frictionStep.next(a.friction, friction, statesSteady_);
-            // A change of the size of a spring's force over the rounding
-            // of a gap is rounding
-            const double scale = std::max(std::abs(friction), a.kN*gapRounding_);
-            const double moved = std::abs(a.frictionStep.lastChange());
-            if (moved > frictionTolerance*scale) ++counts.frictionUpdates;
-            if (moved > frictionTolerance*a.kN*gapRounding_)
-            {
-                counts.frictionChange += moved;
-            }
-            counts.frictionLoad += std::abs(friction);
-        }
-        r.state = d.state;
-        r.bondIntact = d.bondIntact;
-        // An open contact carries no force: its multiplier starts again
-        // from 0 when it closes
-        if (!isClosed(r.state)) r.multiplier = 0;
-        a.friction = friction;
-        ++counts.states[contactStateNumber(r.state)];
+        counts.changes += c.changed;
+        counts.chattering += c.chattering;
+        counts.bondsBroken += c.bondBroken;
+        counts.frictionUpdates += c.frictionUpdated;
+        // + 0 leaves a sum of magnitudes as it was, bit for bit
+        counts.frictionChange += c.frictionChange;
+        counts.frictionLoad += c.frictionLoad;
+        ++counts.states[contactStateNumber(c.state)];
     }
     statesSteady_ = counts.changes == 0;
     return counts;
+}
+
+
+contactModel::contactTally contactModel::updateOne(active& a, const Eigen::VectorXd& dd) const
+{
+    contactTally tally;
+    contactRecord& r = a.record;
+    a.dn = along(a.g, dd);
+    a.ds = along(a.h, dd);
+    r.gap = a.gap0 + a.dn;
+
+    contactQuery q;
+    q.state = r.state;
+    q.bondIntact = r.bondIntact;
+    q.gap = r.gap;
+    // An open contact gets the trial forces of closing over the whole
+    // step, so that one that closes while slipping starts sliding
+    q.Fn = r.multiplier - a.kN*r.gap;
+    q.Fs = a.shearForce0 - a.kS*a.ds;
+    q.length = r.length*thickness_;
+    // A coupled fluid's pressure is a load on the faces (pressureLoads),
+    // so the springs carry the rest, the effective normal force Fn - p L
+    // of the paper's Eq. 8, which the law compares with its strengths
+    // A slip within the touch tolerance is rounding: its sign must not
+    // turn the friction of a contact at rest
+    const bool slips = std::abs(a.ds) > settings_.touchTolerance;
+    q.shearDisplacement = r.state != contactState::bonded && slips ? a.ds : 0;
+
+    contactDecision d = a.law->decide(q);
+    if (holdFriction_ && d.state == contactState::sliding)
+    {
+        d.state = contactState::bonded;
+        d.frictionForce = 0;
+    }
+    if
+    (
+        r.state == contactState::sliding && d.state == contactState::sliding
+     && slips && a.friction*a.ds > 0
+    )
+    {
+        // The friction load drove the vertex backwards: it overshoots
+        // the stop within the step, so the contact sticks (Shi's rule
+        // for a reversed slip). It stops where the slip reversed, at
+        // the step's start, with the friction force in its spring: the
+        // spring force the step started with may lie outside the cone
+        // the step ends with, and would make it slide again
+        d.state = contactState::bonded;
+        a.shearForce0 = a.friction;
+        a.locked = true;
+    }
+    else if
+    (
+        a.locked && r.state == contactState::bonded
+     && d.state == contactState::sliding
+     && std::abs(q.Fs) <= (1 + frictionTolerance)*std::abs(d.frictionForce)
+    )
+    {
+        // Locked at the friction force, it stays within the friction
+        // tolerance of the cone rather than slide and reverse again
+        d.state = contactState::bonded;
+        d.frictionForce = 0;
+    }
+    if (d.state != r.state)
+    {
+        tally.changed = true;
+        ++a.changes;
+        tally.chattering = a.changes >= maxChangesPerStep;
+    }
+    if (d.bondBroken)
+    {
+        tally.bondBroken = true;
+        r.bondBroken = true;
+    }
+    r.normalForce = isClosed(r.state) ? q.Fn : 0;
+    r.shearForce = r.state == contactState::sliding ? a.friction
+                 : r.state == contactState::bonded ? q.Fs : 0;
+    // Friction needs the normal force of a closed solve: the trial
+    // force of an open contact can be any multiple of the real one
+    double friction = r.state == contactState::open ? 0.0 : d.frictionForce;
+    if (d.state == contactState::sliding && d.state == r.state)
+    {
+        friction = a.frictionStep.next(a.friction, friction, statesSteady_);
+        // A change of the size of a spring's force over the rounding
+        // of a gap is rounding
+        const double scale = std::max(std::abs(friction), a.kN*gapRounding_);
+        const double moved = std::abs(a.frictionStep.lastChange());
+        tally.frictionUpdated = moved > frictionTolerance*scale;
+        if (moved > frictionTolerance*a.kN*gapRounding_) tally.frictionChange = moved;
+        tally.frictionLoad = std::abs(friction);
+    }
+    r.state = d.state;
+    r.bondIntact = d.bondIntact;
+    // An open contact carries no force: its multiplier starts again
+    // from 0 when it closes
+    if (!isClosed(r.state)) r.multiplier = 0;
+    a.friction = friction;
+    tally.state = r.state;
+    return tally;
 }
 
 
@@ -1032,15 +1050,17 @@ long contactModel::breakOverloadedBonds()
 
 contactModel::iterationCounts contactModel::settleForces(const Eigen::VectorXd& dd)
 {
-    iterationCounts counts;
-    for (active& a : active_)
+    const long n = long(active_.size());
+    #pragma omp parallel for schedule(static) if (threaded_ && n >= minThreadedContacts)
+    for (long k = 0; k < n; ++k)
     {
-        contactRecord& r = a.record;
+        active& a = active_[std::size_t(k)];
         a.dn = along(a.g, dd);
         a.ds = along(a.h, dd);
-        r.gap = a.gap0 + a.dn;
-        ++counts.states[contactStateNumber(r.state)];
+        a.record.gap = a.gap0 + a.dn;
     }
+    iterationCounts counts;
+    for (const active& a : active_) ++counts.states[contactStateNumber(a.record.state)];
     return counts;
 }
 
