@@ -174,14 +174,12 @@ bool penaltyOpenClose::openClose
     // then on: each solve's increment is taken only as far as it lowers
     // the step's potential, which cannot cycle
     bool damped = false;
+    clockTime clock;
+    statesSystem states = statesNow(n);
+    srv.addTime("contact assembly", clock);
     for (int it = 1; it <= given_.maxOpenCloseIterations && !settled; ++it)
     {
-        clockTime clock;
-        const std::vector<double> k = contacts_->springStiffnesses();
-        const Eigen::VectorXd f = loads_ + contacts_->forces(n);
-        srv.addTime("contact assembly", clock);
-
-        const Eigen::VectorXd delta = solveWithStates(k, f, dd, srv, report);
+        const Eigen::VectorXd delta = solveWithStates(states, dd, srv, report);
 
         clock = clockTime();
         double alpha = 1;
@@ -196,10 +194,11 @@ bool penaltyOpenClose::openClose
         dd += alpha*delta;
         const auto counts = contacts_->update(dd);
         damped = damped || counts.chattering > 0;
+        states = statesNow(n);
         // How far dd is from balance with the states the next solve takes:
         // small where only states at rounding switch, of order one where
         // the iteration has not found the step's states
-        const auto [residual, ofLoads] = relativeResiduals(sys, dd);
+        const auto [residual, ofLoads] = relativeResiduals(dd, states);
         srv.addTime("contact update", clock);
         ++report.iterations;
         report.contacts = counts.states;
@@ -217,15 +216,20 @@ bool penaltyOpenClose::openClose
 }
 
 
+penaltyOpenClose::statesSystem penaltyOpenClose::statesNow(long nUnknowns) const
+{
+    return {contacts_->springStiffnesses(), loads_ + contacts_->forces(nUnknowns), std::nullopt};
+}
+
+
 std::pair<double, double> penaltyOpenClose::relativeResiduals
 (
-    const nmmAssembler::system& sys,
-    const Eigen::VectorXd& dd
+    const Eigen::VectorXd& dd,
+    statesSystem& s
 ) const
 {
-    const long n = long(sys.f.size());
-    const Eigen::VectorXd f = loads_ + contacts_->forces(n);
-    const Eigen::VectorXd r = update_.residual(contacts_->springStiffnesses(), dd, f);
+    const Eigen::VectorXd& f = s.f;
+    const Eigen::VectorXd& r = s.r.emplace(update_.residual(s.k, dd, f));
     const double scale = std::max(f.norm(), (r + f).norm());
     const double loads = loads_.norm();
     return
@@ -271,13 +275,14 @@ penaltyOpenClose::motion penaltyOpenClose::searchMotion(const Eigen::Matrix2Xd& 
 
 Eigen::VectorXd penaltyOpenClose::solveWithStates
 (
-    const std::vector<double>& k,
-    const Eigen::VectorXd& f,
+    const statesSystem& s,
     const Eigen::VectorXd& dd,
     const services& srv,
     stepReport& report
 )
 {
+    const std::vector<double>& k = s.k;
+    const Eigen::VectorXd& f = s.f;
     // The increment from dd, not the solution itself: near convergence it
     // is small against dd, and its rounding must be its own
     lastSolve_.clear();
@@ -287,7 +292,11 @@ Eigen::VectorXd penaltyOpenClose::solveWithStates
         const double solved = srv.timing ? (*srv.timing)["solution"] : 0.0;
         const clockTime clock;
         Eigen::VectorXd x;
-        const bool ok = update_.solve(k, -update_.residual(k, dd, f), srv.solveColumns, x);
+        const bool ok = update_.solve
+        (
+            k, s.r ? Eigen::VectorXd(-*s.r) : Eigen::VectorXd(-update_.residual(k, dd, f)),
+            srv.solveColumns, x
+        );
         if (srv.timing)
         {
             (*srv.timing)["factor update"] += clock.elapsed() - ((*srv.timing)["solution"] - solved);
