@@ -104,23 +104,27 @@ double along(const std::vector<std::pair<int, double>>& t, const Eigen::VectorXd
 }
 
 
-//- Where each stored entry of A (in storage order) is among the values of
-//  B, whose pattern holds A's: both columns are sorted, so one walk each
-std::vector<int> slotsIn
+//- Where each stored entry of A's lower triangle (its index among A's
+//  values) is among the values of B, whose pattern holds that triangle:
+//  both columns are sorted, so one walk each
+std::vector<std::array<int, 2>> lowerSlotsIn
 (
     const Eigen::SparseMatrix<double>& A,
     const Eigen::SparseMatrix<double>& B
 )
 {
-    std::vector<int> slots(std::size_t(A.nonZeros()));
+    std::vector<std::array<int, 2>> slots;
+    slots.reserve(std::size_t(B.nonZeros()));
     const int* bInner = B.innerIndexPtr();
     for (int j = 0; j < A.outerSize(); ++j)
     {
         int b = B.outerIndexPtr()[j];
         for (int a = A.outerIndexPtr()[j]; a < A.outerIndexPtr()[j + 1]; ++a)
         {
-            while (bInner[b] != A.innerIndexPtr()[a]) ++b;
-            slots[std::size_t(a)] = b;
+            const int i = A.innerIndexPtr()[a];
+            if (i < j) continue;
+            while (bInner[b] != i) ++b;
+            slots.push_back({a, b});
         }
     }
     return slots;
@@ -455,7 +459,7 @@ contactModel::sparseMatrix contactModel::withPattern(const sparseMatrix& K)
         // K + 0 is K, bit for bit
         double* values = stepMatrix_.valuePtr();
         std::fill(values, values + stepMatrix_.nonZeros(), 0.0);
-        for (std::size_t k = 0; k < kSlots_.size(); ++k) values[kSlots_[k]] = K.valuePtr()[k];
+        for (const auto& [k, at] : kSlots_) values[at] = K.valuePtr()[k];
     }
     else
     {
@@ -481,7 +485,11 @@ void contactModel::makeStepPattern
     // Column by column: K's rows and those of every clique holding the
     // column, each once (a marker per row), then sorted. A matrix of
     // zeros summed with K by Eigen went through every clique's m^2
-    // entries three times, a quarter of a wall's step
+    // entries three times, a quarter of a wall's step. The lower triangle
+    // only (the diagonal and below): the linear solvers and the products
+    // with it read no more (selfadjointView<Lower>), and with both
+    // triangles the copies, the springs and CHOLMOD's permuting
+    // transpose went through twice the entries
     const int columns = int(K.cols());
     std::vector<int> start(std::size_t(columns) + 1, 0);
     for (const auto& dofs : cliques)
@@ -502,7 +510,7 @@ void contactModel::makeStepPattern
         const std::size_t first = inner.size();
         const auto add = [&](int i)
         {
-            if (mark[std::size_t(i)] == j) return;
+            if (i < j || mark[std::size_t(i)] == j) return;
             mark[std::size_t(i)] = j;
             inner.push_back(i);
         };
@@ -519,27 +527,27 @@ void contactModel::makeStepPattern
     std::copy(outer.begin(), outer.end(), stepMatrix_.outerIndexPtr());
     std::copy(inner.begin(), inner.end(), stepMatrix_.innerIndexPtr());
     std::fill(stepMatrix_.valuePtr(), stepMatrix_.valuePtr() + inner.size(), 0.0);
-    kSlots_ = slotsIn(K, stepMatrix_);
-    for (std::size_t k = 0; k < kSlots_.size(); ++k) stepMatrix_.valuePtr()[kSlots_[k]] = K.valuePtr()[k];
+    kSlots_ = lowerSlotsIn(K, stepMatrix_);
+    for (const auto& [k, at] : kSlots_) stepMatrix_.valuePtr()[at] = K.valuePtr()[k];
     kOuter_.assign(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1);
     kInner_.assign(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros());
 
-    // Each clique's column b, rows a, at [b m + a]: the rows are sorted,
-    // so one walk down each column
+    // Each clique's column b, rows a >= b (its dofs are sorted), one
+    // after the other: the rows are sorted, so one walk down each column
     cliqueSlots_.assign(cliques.size(), {});
     const int* rows = stepMatrix_.innerIndexPtr();
     for (std::size_t c = 0; c < cliques.size(); ++c)
     {
         const std::vector<int>& dofs = cliques[c];
         std::vector<int>& slots = cliqueSlots_[c];
-        slots.resize(dofs.size()*dofs.size());
+        slots.resize(dofs.size()*(dofs.size() + 1)/2);
         std::size_t n = 0;
-        for (const int j : dofs)
+        for (std::size_t b = 0; b < dofs.size(); ++b)
         {
-            int at = stepMatrix_.outerIndexPtr()[j];
-            for (const int i : dofs)
+            int at = stepMatrix_.outerIndexPtr()[dofs[b]];
+            for (std::size_t a = b; a < dofs.size(); ++a)
             {
-                while (rows[at] != i) ++at;
+                while (rows[at] != dofs[a]) ++at;
                 slots[n++] = at;
             }
         }
@@ -564,16 +572,17 @@ std::vector<double> contactModel::springStiffnesses() const
 void contactModel::addSprings(sparseMatrix& K) const
 {
     double* values = K.valuePtr();
-    // Down each column b of the clique (its slots' order), the entry of
-    // row a gets k c_a c_b
+    // Down each column b of the clique from its diagonal (its slots'
+    // order), the entry of row a gets k c_a c_b
     const auto add = [this, values](const terms& t, int clique, double k)
     {
         if (k == 0) return;
         const std::vector<int>& at = cliqueSlots_[std::size_t(clique)];
         std::size_t n = 0;
-        for (const auto& [j, cb] : t)
+        for (std::size_t b = 0; b < t.size(); ++b)
         {
-            for (const auto& [i, ca] : t) values[at[n++]] += k*ca*cb;
+            const double cb = t[b].second;
+            for (std::size_t a = b; a < t.size(); ++a) values[at[n++]] += k*t[a].second*cb;
         }
     };
     const std::vector<double> k = springStiffnesses();
