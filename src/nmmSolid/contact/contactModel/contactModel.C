@@ -774,6 +774,52 @@ contactModel::iterationCounts contactModel::update(const Eigen::VectorXd& dd)
 }
 
 
+contactDecision contactModel::decideState
+(
+    active& a,
+    const contactQuery& q,
+    bool slips
+) const
+{
+    contactDecision d = a.law->decide(q);
+    const contactState state = a.record.state;
+    if (holdFriction_ && d.state == contactState::sliding)
+    {
+        d.state = contactState::bonded;
+        d.frictionForce = 0;
+    }
+    if
+    (
+        state == contactState::sliding && d.state == contactState::sliding
+     && slips && a.friction*a.ds > 0
+    )
+    {
+        // The friction load drove the vertex backwards: it overshoots
+        // the stop within the step, so the contact sticks (Shi's rule
+        // for a reversed slip). It stops where the slip reversed, at
+        // the step's start, with the friction force in its spring: the
+        // spring force the step started with may lie outside the cone
+        // the step ends with, and would make it slide again
+        d.state = contactState::bonded;
+        a.shearForce0 = a.friction;
+        a.locked = true;
+    }
+    else if
+    (
+        a.locked && state == contactState::bonded
+     && d.state == contactState::sliding
+     && std::abs(q.Fs) <= (1 + frictionTolerance)*std::abs(d.frictionForce)
+    )
+    {
+        // Locked at the friction force, it stays within the friction
+        // tolerance of the cone rather than slide and reverse again
+        d.state = contactState::bonded;
+        d.frictionForce = 0;
+    }
+    return d;
+}
+
+
 contactModel::contactTally contactModel::updateOne(active& a, const Eigen::VectorXd& dd) const
 {
     contactTally tally;
@@ -799,40 +845,7 @@ contactModel::contactTally contactModel::updateOne(active& a, const Eigen::Vecto
     const bool slips = std::abs(a.ds) > settings_.touchTolerance;
     q.shearDisplacement = r.state != contactState::bonded && slips ? a.ds : 0;
 
-    contactDecision d = a.law->decide(q);
-    if (holdFriction_ && d.state == contactState::sliding)
-    {
-        d.state = contactState::bonded;
-        d.frictionForce = 0;
-    }
-    if
-    (
-        r.state == contactState::sliding && d.state == contactState::sliding
-     && slips && a.friction*a.ds > 0
-    )
-    {
-        // The friction load drove the vertex backwards: it overshoots
-        // the stop within the step, so the contact sticks (Shi's rule
-        // for a reversed slip). It stops where the slip reversed, at
-        // the step's start, with the friction force in its spring: the
-        // spring force the step started with may lie outside the cone
-        // the step ends with, and would make it slide again
-        d.state = contactState::bonded;
-        a.shearForce0 = a.friction;
-        a.locked = true;
-    }
-    else if
-    (
-        a.locked && r.state == contactState::bonded
-     && d.state == contactState::sliding
-     && std::abs(q.Fs) <= (1 + frictionTolerance)*std::abs(d.frictionForce)
-    )
-    {
-        // Locked at the friction force, it stays within the friction
-        // tolerance of the cone rather than slide and reverse again
-        d.state = contactState::bonded;
-        d.frictionForce = 0;
-    }
+    const contactDecision d = decideState(a, q, slips);
     if (d.state != r.state)
     {
         tally.changed = true;
