@@ -1140,19 +1140,22 @@ long contactModel::overlapsAtStart() const
 std::vector<contactRecord> contactModel::records() const
 {
     // After a settled iteration every state is the one its solve used, so
-    // the forces update() recorded belong to it
-    std::vector<contactRecord> result;
-    result.reserve(active_.size());
-    for (const active& a : active_)
+    // the forces update() recorded belong to it. Each contact's on its
+    // own: on OpenMP's threads
+    const long n = long(active_.size());
+    std::vector<contactRecord> result(active_.size());
+    #pragma omp parallel for schedule(static) if (threaded_ && n >= minThreadedContacts)
+    for (long k = 0; k < n; ++k)
     {
-        contactRecord r = a.record;
+        const active& a = active_[std::size_t(k)];
+        contactRecord& r = result[std::size_t(k)];
+        r = a.record;
         if (r.state == contactState::sliding) r.slip += a.ds;
         if (!isClosed(r.state))
         {
             r.normalForce = 0;
             r.shearForce = 0;
         }
-        result.push_back(r);
     }
     return result;
 }

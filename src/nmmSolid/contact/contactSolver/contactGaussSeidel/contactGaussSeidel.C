@@ -136,10 +136,12 @@ bool contactGaussSeidel::solve
     // The contacts closed at the start, or that the free motion closes or
     // leaves nearer than the joining gap; the others join when the
     // solution would close them
+    // Each contact on its own: on OpenMP's threads
     const std::size_t nc = contacts().size();
     free_.resize(nc);
     included_.assign(nc, 0);
     openAtStart_.assign(nc, 0);
+    #pragma omp parallel for schedule(static) if (long(nc) >= minThreadedContacts)
     for (std::size_t i = 0; i < nc; ++i)
     {
         free_[i] = {along(contacts().springTerms(2*i), ddFree),
@@ -383,14 +385,12 @@ void contactGaussSeidel::numberDirectRows(bool fresh)
     const std::size_t nc = sides_.size();
     auto& eq = directEquations_;
     eq.resize(nc);
+    #pragma omp parallel for schedule(static) if (long(nc) >= minThreadedContacts)
+    for (std::size_t i = 0; i < nc; ++i) eq[i] = c.equations(i);
     bool newRows = fresh || rowOf_.size() != nc;
-    for (std::size_t i = 0; i < nc; ++i)
+    for (std::size_t i = 0; i < nc && !newRows; ++i)
     {
-        eq[i] = c.equations(i);
-        if (isClosed(eq[i].state) && sides_[i][0][0] >= 0 && !newRows && rowOf_[i] < 0)
-        {
-            newRows = true;
-        }
+        newRows = isClosed(eq[i].state) && sides_[i][0][0] >= 0 && rowOf_[i] < 0;
     }
     if (!newRows) return;
     rowOf_.assign(nc, -1);
