@@ -153,11 +153,10 @@ def runKilled(case, env, rng, failures):
                                 stdout=log, stderr=subprocess.STDOUT)
         # Kills are placed by the run's progress, not by the clock, so
         # that a fast machine is killed as often as a slow one: after one
-        # or two new write times and a random moment more, or as soon as
-        # a time directory is being written
-        # a moment more: a drawn fraction of the wall time one write
-        # interval took, so that it too is measured in progress; a
-        # moment in seconds let a fast run end before its tenth kill
+        # or two new write times and a drawn fraction of the wall time
+        # the last write interval took (a moment of up to 0.05 s let a
+        # fast run end before its tenth kill), or as soon as a time
+        # directory is being written
         atWrite = kills < minKills and kills % 3 == 2
         seen = len(timeDirs(case))
         target = seen + rng.randint(1, 2)

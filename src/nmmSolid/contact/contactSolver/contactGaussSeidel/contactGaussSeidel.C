@@ -135,8 +135,8 @@ bool contactGaussSeidel::solve
 
     // The contacts closed at the start, or that the free motion closes or
     // leaves nearer than the joining gap; the others join when the
-    // solution would close them
-    // Each contact on its own: on OpenMP's threads
+    // solution would close them. Each contact on its own: on OpenMP's
+    // threads
     const std::size_t nc = contacts().size();
     free_.resize(nc);
     included_.assign(nc, 0);
