@@ -83,6 +83,12 @@ nmmSolidModel::nmmSolidModel(parts p)
         *space_, elementMaterials(), parts_.properties->thickness(), std::move(rules),
         parts_.gravity
     );
+    // The loops over elements and patches on OpenMP's threads, with or
+    // without contacts and whichever method solves them: CHOLMOD's BLAS is
+    // serial (Debian's libopenblas0-serial), so nothing else runs on the
+    // other core between its calls
+    assembler_->threaded(true);
+    space_->threaded(true);
     update_ = std::make_unique<updatedLagrangian>
     (
         *space_, *assembler_, parts_.geometry->nBlocks(), parts_.largeDisplacement
@@ -124,12 +130,6 @@ void nmmSolidModel::createContacts()
     p.dynamic = parts_.scheme->dynamic();
     p.quasiStatic = p.dynamic && !parts_.scheme->keepsVelocity();
     parts_.contactMethod->setUp(std::move(p));
-    // The loops over elements, patches and contacts on OpenMP's threads,
-    // whichever method solves: CHOLMOD's BLAS is serial (Debian's
-    // libopenblas0-serial), so nothing else runs on the other core
-    // between its calls
-    assembler_->threaded(true);
-    space_->threaded(true);
 }
 
 
