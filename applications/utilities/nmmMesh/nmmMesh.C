@@ -363,7 +363,9 @@ int run(int argc, char* argv[])
         std::cout << "\nWriting\n";
         phaseTimer writeTimer;
         const fs::path h5 = nmm::nmmMeshFile::fileName(casePath);
-        nmm::nmmMeshFile::write(h5, *cover, pc, nmm::nmmMeshFile::sourceOf(dictPath));
+        auto from = nmm::nmmMeshFile::sourceOf(dictPath);
+        from.meshDictFingerprint = nmm::nmmMeshFile::fingerprint(meshDict);
+        nmm::nmmMeshFile::write(h5, *cover, pc, from);
         const fs::path vtu = nmm::vtkWriter::writeMesh(casePath,
             vtkMesh(*cover, pc, materialOfBlock));
         std::cout << "    " << h5.lexically_relative(casePath).string() << "\n"

@@ -367,6 +367,30 @@ physicalCover::physicalCover
 }
 
 
+physicalCover::physicalCover
+(
+    std::vector<patch> patches,
+    std::vector<element> elements,
+    std::vector<boundarySegment> segments,
+    unknownsOfParts unknowns
+)
+:
+    patches_(std::move(patches)),
+    elements_(std::move(elements)),
+    segments_(std::move(segments)),
+    extensionOffsets_(std::move(unknowns.extensionOffsets)),
+    extensionTerms_(std::move(unknowns.extensionTerms)),
+    unknownPatches_(std::move(unknowns.unknownPatches)),
+    stats_(unknowns.stats)
+{
+    unknownIndex_.assign(patches_.size(), -1);
+    for (std::size_t k = 0; k < unknownPatches_.size(); ++k)
+    {
+        unknownIndex_[std::size_t(unknownPatches_[k])] = label(k);
+    }
+}
+
+
 void physicalCover::addElement
 (
     const element& proto,

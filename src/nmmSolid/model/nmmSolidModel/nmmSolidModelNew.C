@@ -3,6 +3,7 @@
 #include "nmmSolid/boundary/gravity/gravity.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/case/caseFolder/caseFolder.H"
+#include "nmmSolid/output/hdf5/nmmMeshFile/nmmMeshFile.H"
 
 #include <filesystem>
 #include <iostream>
@@ -116,6 +117,37 @@ std::unique_ptr<contactProperties> readContacts
     return std::make_unique<contactProperties>(contactProperties::read(file, props.names()));
 }
 
+
+//- The physical cover nmmMesh stored in constant/nmmMesh, when it was
+//  made from nmmMeshDict as it is now, on the same mathematical cover;
+//  else cut here (a case never meshed, or edited since), origin saying
+//  which and why. The cut is most of a large pack's start: 4 s of a
+//  pack of 3,000 grains
+std::unique_ptr<physicalCover> storedOrCut
+(
+    const caseFolder& runCase,
+    const dictionary& meshDict,
+    const mathematicalCover& cover,
+    const blockGeometry& geometry,
+    std::string& origin
+)
+{
+    const auto file = nmmMeshFile::fileName(runCase.path());
+    std::string why = nmmMeshFile::whyNotCurrent(file, meshDict);
+    if (why.empty())
+    {
+        nmmMeshFile::contents stored = nmmMeshFile::read(file);
+        if (stored.nodes == cover.nodes() && stored.triangles == cover.triangles())
+        {
+            origin = "read from constant/nmmMesh/nmmMesh.h5";
+            return std::move(stored.mesh);
+        }
+        why = file.string() + " was made on another mathematical cover";
+    }
+    origin = "cut from the blocks: " + why;
+    return std::make_unique<physicalCover>(cover, geometry, meshDict.subDict("cover"));
+}
+
 } // End anonymous namespace
 
 
@@ -157,7 +189,7 @@ std::unique_ptr<nmmSolidModel> nmmSolidModel::New
     }
     const dictionary& coverDict = meshDict.subDict("cover");
     p.cover = mathematicalCover::New(coverDict, *p.geometry);
-    p.elements = std::make_unique<physicalCover>(*p.cover, *p.geometry, coverDict);
+    p.elements = storedOrCut(runCase, meshDict, *p.cover, *p.geometry, p.meshOrigin);
     p.properties = std::make_unique<mechanicalProperties>(mechanicalProperties::read(runCase));
 
     p.controls = std::make_unique<solutionControls>

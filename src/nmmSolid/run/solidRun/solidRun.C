@@ -34,6 +34,7 @@ std::unique_ptr<nmmSolidModel> solidRun::createModel(const Time& runTime, std::o
         model->solveInitialEquilibrium();
     }
     const auto& pc = model->elements();
+    log << "    mesh " << model->meshOrigin() << '\n';
     log << "    blocks " << model->geometry().nBlocks()
         << ", elements " << pc.nElements()
         << ", physical patches " << pc.nPatches()

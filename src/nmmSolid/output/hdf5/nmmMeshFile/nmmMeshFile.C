@@ -3,6 +3,10 @@
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/output/hdf5/hdf5File/hdf5File.H"
 
+#include "nmmSolid/io/dictionary/dictionary.H"
+
+#include <iomanip>
+#include <sstream>
 #include <system_error>
 
 #include <sys/stat.h>
@@ -77,6 +81,50 @@ void checkOffsets
     if (!ok) badFile(file, "dataset \"" + name + "\" holds invalid offsets");
 }
 
+
+//- The patches' unknowns and terms, and the statistics; every index in
+//  range, as the cover's constructor from stored parts trusts them
+physicalCover::unknownsOfParts readUnknowns
+(
+    const hdf5File& in,
+    const fs::path& file,
+    std::size_t nPatches
+)
+{
+    physicalCover::unknownsOfParts u;
+    const auto offsets = in.read<std::int64_t>("extensions/offsets");
+    const auto unknownPatch = in.read<std::int32_t>("extensions/unknownPatch");
+    const auto coefficient = in.read<double>("extensions/coefficient");
+    checkOffsets(file, "extensions/offsets", offsets, nPatches, unknownPatch.size());
+    checkRows(file, "extensions/coefficient", coefficient.size(), unknownPatch.size());
+    u.extensionOffsets.assign(offsets.begin(), offsets.end());
+    u.unknownPatches = in.read<std::int32_t>("extensions/unknownPatches");
+    for (std::size_t k = 0; k < u.unknownPatches.size(); ++k)
+    {
+        const label p = u.unknownPatches[k];
+        if (p < 0 || std::size_t(p) >= nPatches || (k > 0 && p <= u.unknownPatches[k - 1]))
+        {
+            badFile(file, "dataset \"extensions/unknownPatches\" holds an invalid patch");
+        }
+    }
+    for (std::size_t i = 0; i < unknownPatch.size(); ++i)
+    {
+        if (unknownPatch[i] < 0 || std::size_t(unknownPatch[i]) >= u.unknownPatches.size())
+        {
+            badFile(file, "dataset \"extensions/unknownPatch\" holds an invalid unknown");
+        }
+        u.extensionTerms.push_back({unknownPatch[i], coefficient[i]});
+    }
+
+    u.stats.nCutTriangles = std::size_t(in.readIntAttribute("statistics", "nCutTriangles"));
+    u.stats.nExtendedPatches =
+        std::size_t(in.readIntAttribute("statistics", "nExtendedPatches"));
+    u.stats.smallestAreaRatio = in.readDoubleAttribute("statistics", "smallestAreaRatio");
+    u.stats.smallestSupportRatio =
+        in.readDoubleAttribute("statistics", "smallestSupportRatio");
+    return u;
+}
+
 } // End anonymous namespace
 
 
@@ -140,6 +188,10 @@ void nmmMeshFile::write
     out.writeAttribute("/", "formatVersion", formatVersion);
     out.writeAttribute("/", "meshDict", from.meshDict);
     out.writeAttribute("/", "meshDictStamp", from.meshDictStamp);
+    if (!from.meshDictFingerprint.empty())
+    {
+        out.writeAttribute("/", "meshDictFingerprint", from.meshDictFingerprint);
+    }
     out.writeAttribute("/", "coverType", from.coverType);
     out.writeAttribute("/", "cellSize", from.cellSize);
 
@@ -297,6 +349,10 @@ nmmMeshFile::contents nmmMeshFile::read(const fs::path& file)
     }
     c.from.meshDict = in.readStringAttribute("/", "meshDict");
     c.from.meshDictStamp = in.readIntAttribute("/", "meshDictStamp");
+    if (in.hasAttribute("/", "meshDictFingerprint"))
+    {
+        c.from.meshDictFingerprint = in.readStringAttribute("/", "meshDictFingerprint");
+    }
     c.from.coverType = in.readStringAttribute("/", "coverType");
     c.from.cellSize = in.readDoubleAttribute("/", "cellSize");
 
@@ -406,33 +462,53 @@ nmmMeshFile::contents nmmMeshFile::read(const fs::path& file)
         }
     }
 
-    {
-        const auto offsets = in.read<std::int64_t>("extensions/offsets");
-        const auto unknownPatch = in.read<std::int32_t>("extensions/unknownPatch");
-        const auto coefficient = in.read<double>("extensions/coefficient");
-        checkOffsets(file, "extensions/offsets", offsets, patches.size(),
-            unknownPatch.size());
-        checkRows(file, "extensions/coefficient", coefficient.size(), unknownPatch.size());
-        c.extensionOffsets.assign(offsets.begin(), offsets.end());
-        for (std::size_t i = 0; i < unknownPatch.size(); ++i)
-        {
-            c.extensionTerms.push_back({unknownPatch[i], coefficient[i]});
-        }
-        c.unknownPatches = in.read<std::int32_t>("extensions/unknownPatches");
-    }
-
-    c.stats.nCutTriangles = std::size_t(in.readIntAttribute("statistics", "nCutTriangles"));
-    c.stats.nExtendedPatches =
-        std::size_t(in.readIntAttribute("statistics", "nExtendedPatches"));
-    c.stats.smallestAreaRatio = in.readDoubleAttribute("statistics", "smallestAreaRatio");
-    c.stats.smallestSupportRatio =
-        in.readDoubleAttribute("statistics", "smallestSupportRatio");
-
+    physicalCover::unknownsOfParts u = readUnknowns(in, file, patches.size());
     c.mesh = std::make_unique<physicalCover>
     (
-        std::move(patches), std::move(elements), std::move(segments)
+        std::move(patches), std::move(elements), std::move(segments), std::move(u)
     );
     return c;
+}
+
+
+std::string nmmMeshFile::fingerprint(const dictionary& meshDict)
+{
+    std::ostringstream text;
+    meshDict.write(text);
+    std::uint64_t h = 14695981039346656037ull;
+    for (const unsigned char c : text.str())
+    {
+        h ^= c;
+        h *= 1099511628211ull;
+    }
+    std::ostringstream hex;
+    hex << std::hex << std::setw(16) << std::setfill('0') << h;
+    return hex.str();
+}
+
+
+std::string nmmMeshFile::whyNotCurrent(const fs::path& file, const dictionary& meshDict)
+{
+    if (!fs::exists(file)) return "there is no " + file.string();
+    const hdf5File in = hdf5File::openRead(file);
+    if
+    (
+        !in.hasAttribute("/", "formatVersion")
+     || in.readIntAttribute("/", "formatVersion") != formatVersion
+    )
+    {
+        return file.string() + " is not of this version's format";
+    }
+    if
+    (
+        !in.hasAttribute("/", "meshDictFingerprint")
+     || in.readStringAttribute("/", "meshDictFingerprint") != fingerprint(meshDict)
+    )
+    {
+        return file.string() + " was not made from nmmMeshDict as it reads now"
+            " (it or a file it includes has changed since nmmMesh ran)";
+    }
+    return {};
 }
 
 } // End namespace nmm
