@@ -286,8 +286,8 @@ TEST(nmmMeshFile, currentWhileTheDictionaryReadsTheSame)
             {{0, 1, 2}, {0, 2, 3}}, handMade(), from);
     };
     write();
-    EXPECT_NE(nmm::nmmMeshFile::whyNotCurrent(file, a).find("has changed"),
-        std::string::npos) << "a file without a fingerprint";
+    EXPECT_NE(nmm::nmmMeshFile::whyNotCurrent(file, a).find("no fingerprint"),
+        std::string::npos);
 
     from.meshDictFingerprint = nmm::nmmMeshFile::fingerprint(a);
     write();

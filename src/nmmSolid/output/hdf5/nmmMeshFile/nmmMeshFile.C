@@ -499,11 +499,12 @@ std::string nmmMeshFile::whyNotCurrent(const fs::path& file, const dictionary& m
     {
         return file.string() + " is not of this version's format";
     }
-    if
-    (
-        !in.hasAttribute("/", "meshDictFingerprint")
-     || in.readStringAttribute("/", "meshDictFingerprint") != fingerprint(meshDict)
-    )
+    if (!in.hasAttribute("/", "meshDictFingerprint"))
+    {
+        return file.string() + " holds no fingerprint of the nmmMeshDict it was"
+            " made from (an earlier nmmMesh wrote it): run nmmMesh again to store one";
+    }
+    if (in.readStringAttribute("/", "meshDictFingerprint") != fingerprint(meshDict))
     {
         return file.string() + " was not made from nmmMeshDict as it reads now"
             " (it or a file it includes has changed since nmmMesh ran)";
