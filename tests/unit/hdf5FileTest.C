@@ -1,6 +1,6 @@
 // nmm::hdf5File: datasets, groups and attributes round trip; atomic
 // creation; errors name the file and the dataset
-#include "nmmSolid/output/hdf5/hdf5File/hdf5File.H"
+#include "nmmSolid/io/hdf5File/hdf5File.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 
 #include "testTools.H"

@@ -2,8 +2,8 @@
 // read back bit for bit, their unknowns and extensions too; a file of
 // another format version is refused; a file stands for the mesh only
 // while its nmmMeshDict reads the same, and the model reads it then
-#include "nmmSolid/output/hdf5/nmmMeshFile/nmmMeshFile.H"
-#include "nmmSolid/output/hdf5/hdf5File/hdf5File.H"
+#include "nmmSolid/cover/nmmMeshFile/nmmMeshFile.H"
+#include "nmmSolid/io/hdf5File/hdf5File.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/geometry/blockGeometry/blockGeometry.H"
 #include "nmmSolid/io/dictionary/dictionary.H"
@@ -103,6 +103,22 @@ void expectSameUnknowns(const physicalCover& a, const physicalCover& b)
     EXPECT_TRUE(sameBits(a.stats().smallestSupportRatio, b.stats().smallestSupportRatio));
 }
 
+//- Reading file is a fatalError that says what and names the file
+void expectRefused(const std::filesystem::path& file, const std::string& what)
+{
+    try
+    {
+        nmm::nmmMeshFile::read(file);
+        ADD_FAILURE() << "no error";
+    }
+    catch (const nmm::fatalError& e)
+    {
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find(what), std::string::npos) << msg;
+        EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -194,17 +210,19 @@ TEST(nmmMeshFile, otherVersionRefused)
         out.writeAttribute("/", "formatVersion", std::int64_t(99));
         out.commit();
     }
-    try
-    {
-        nmm::nmmMeshFile::read(file);
-        ADD_FAILURE() << "no error";
-    }
-    catch (const nmm::fatalError& e)
-    {
-        const std::string msg = e.what();
-        EXPECT_NE(msg.find("format version 99"), std::string::npos) << msg;
-        EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
-    }
+    expectRefused(file, "format version 99");
+}
+
+
+// A file whose indices do not fit its own tables is an error naming it,
+// not a cover that would crash the solver
+TEST(nmmMeshFile, damagedIndicesRefused)
+{
+    nmm::test::tempDir dir("nmmMeshFile");
+    const auto file = dir.path / "nmmMesh.h5";
+    // handMade()'s patches are at nodes 0 to 3; the cover has two
+    nmm::nmmMeshFile::write(file, {{0, 0}, {1, 0}}, {{0, 1, 1}}, handMade(), {});
+    expectRefused(file, "not in cover/nodes");
 }
 
 
@@ -264,7 +282,7 @@ TEST(nmmMeshFile, cutMeshRoundTrip)
 
 // The solver reads a stored mesh only while nmmMeshDict reads as it did
 // for nmmMesh: a change in the last digit of one coordinate is seen, a
-// file without a fingerprint is not taken
+// file without a fingerprint, or one that is not HDF5, is not taken
 TEST(nmmMeshFile, currentWhileTheDictionaryReadsTheSame)
 {
     const auto meshDict = [](const std::string& x)
@@ -277,6 +295,11 @@ TEST(nmmMeshFile, currentWhileTheDictionaryReadsTheSame)
     nmm::test::tempDir dir("nmmMeshFile");
     const auto file = nmm::nmmMeshFile::fileName(dir.path);
     EXPECT_NE(nmm::nmmMeshFile::whyNotCurrent(file, a).find("there is no"),
+        std::string::npos);
+    // Not HDF5 (a run leaves junk): a reason to cut, not an error
+    std::filesystem::create_directories(file.parent_path());
+    dir.write("constant/nmmMesh/nmmMesh.h5", "mesh");
+    EXPECT_NE(nmm::nmmMeshFile::whyNotCurrent(file, a).find("cannot be read"),
         std::string::npos);
 
     nmm::nmmMeshFile::source from;

@@ -12,7 +12,7 @@ Description
 #include "testTools.H"
 
 #include "nmmSolid/global/fatalError/fatalError.H"
-#include "nmmSolid/output/vtk/atomicFile/atomicFile.H"
+#include "nmmSolid/io/atomicFile/atomicFile.H"
 #include "nmmSolid/output/vtk/base64/base64.H"
 #include "nmmSolid/output/vtk/vtkFieldNames/vtkFieldNames.H"
 #include "nmmSolid/output/vtk/vtkWriter/vtkWriter.H"

@@ -51,7 +51,7 @@ Usage
 #include "nmmSolid/io/countAndNames/countAndNames.H"
 #include "nmmSolid/io/dictionary/dictionary.H"
 #include "nmmSolid/material/mechanicalProperties/mechanicalProperties.H"
-#include "nmmSolid/output/hdf5/nmmMeshFile/nmmMeshFile.H"
+#include "nmmSolid/cover/nmmMeshFile/nmmMeshFile.H"
 #include "nmmSolid/output/vtk/vtkFieldNames/vtkFieldNames.H"
 #include "nmmSolid/output/vtk/vtkPolygonMesh/vtkPolygonMesh.H"
 #include "nmmSolid/output/vtk/vtkWriter/vtkWriter.H"

@@ -3,7 +3,7 @@
 #include "nmmSolid/boundary/gravity/gravity.H"
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/case/caseFolder/caseFolder.H"
-#include "nmmSolid/output/hdf5/nmmMeshFile/nmmMeshFile.H"
+#include "nmmSolid/cover/nmmMeshFile/nmmMeshFile.H"
 
 #include <filesystem>
 #include <iostream>
@@ -118,6 +118,22 @@ std::unique_ptr<contactProperties> readContacts
 }
 
 
+//- Every block a cover's patches, elements and segments name is one of
+//  nBlocks
+bool blocksOf(const physicalCover& pc, std::size_t nBlocks)
+{
+    const auto in = [&](auto b) { return b >= 0 && std::size_t(b) < nBlocks; };
+    bool ok = true;
+    for (const auto& p : pc.patches()) ok = ok && in(p.block);
+    for (const auto& e : pc.elements()) ok = ok && in(e.block);
+    for (const auto& s : pc.segments())
+    {
+        ok = ok && (s.kind != physicalCover::segmentKind::blockEdge || in(long(s.edge.block)));
+    }
+    return ok;
+}
+
+
 //- The physical cover nmmMesh stored in constant/nmmMesh, when it was
 //  made from nmmMeshDict as it is now, on the same mathematical cover;
 //  else cut here (a case never meshed, or edited since), origin saying
@@ -137,12 +153,14 @@ std::unique_ptr<physicalCover> storedOrCut
     if (why.empty())
     {
         nmmMeshFile::contents stored = nmmMeshFile::read(file);
-        if (stored.nodes == cover.nodes() && stored.triangles == cover.triangles())
+        const bool sameCover =
+            stored.nodes == cover.nodes() && stored.triangles == cover.triangles();
+        if (sameCover && blocksOf(*stored.mesh, geometry.nBlocks()))
         {
             origin = "read from constant/nmmMesh/nmmMesh.h5";
             return std::move(stored.mesh);
         }
-        why = file.string() + " was made on another mathematical cover";
+        why = file.string() + " was made on another mathematical cover or geometry";
     }
     origin = "cut from the blocks: " + why;
     return std::make_unique<physicalCover>(cover, geometry, meshDict.subDict("cover"));

@@ -1,7 +1,7 @@
 #include "nmmSolid/output/solidOutput/solidOutput.H"
 
 #include "nmmSolid/global/fatalError/fatalError.H"
-#include "nmmSolid/output/hdf5/hdf5File/hdf5File.H"
+#include "nmmSolid/io/hdf5File/hdf5File.H"
 #include "nmmSolid/output/vtk/vtkFieldNames/vtkFieldNames.H"
 
 #include <Eigen/Eigenvalues>

@@ -2,7 +2,7 @@
 
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/dictionary/IOerror.H"
-#include "nmmSolid/output/vtk/atomicFile/atomicFile.H"
+#include "nmmSolid/io/atomicFile/atomicFile.H"
 
 #include <algorithm>
 #include <charconv>

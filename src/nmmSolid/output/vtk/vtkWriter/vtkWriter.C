@@ -2,7 +2,7 @@
 
 #include "nmmSolid/global/fatalError/fatalError.H"
 #include "nmmSolid/io/case/caseFolder/caseFolder.H"
-#include "nmmSolid/output/vtk/atomicFile/atomicFile.H"
+#include "nmmSolid/io/atomicFile/atomicFile.H"
 
 #include <system_error>
 

@@ -1,7 +1,7 @@
 #include "nmmSolid/output/vtk/vtkXmlFile/vtkXmlFile.H"
 
 #include "nmmSolid/global/fatalError/fatalError.H"
-#include "nmmSolid/output/vtk/atomicFile/atomicFile.H"
+#include "nmmSolid/io/atomicFile/atomicFile.H"
 #include "nmmSolid/output/vtk/base64/base64.H"
 
 #include <charconv>

@@ -1,11 +1,12 @@
-#include "nmmSolid/output/hdf5/nmmMeshFile/nmmMeshFile.H"
+#include "nmmSolid/cover/nmmMeshFile/nmmMeshFile.H"
 
 #include "nmmSolid/global/fatalError/fatalError.H"
-#include "nmmSolid/output/hdf5/hdf5File/hdf5File.H"
+#include "nmmSolid/io/hdf5File/hdf5File.H"
 
 #include "nmmSolid/io/dictionary/dictionary.H"
 
 #include <iomanip>
+#include <optional>
 #include <sstream>
 #include <system_error>
 
@@ -123,6 +124,39 @@ physicalCover::unknownsOfParts readUnknowns
     u.stats.smallestSupportRatio =
         in.readDoubleAttribute("statistics", "smallestSupportRatio");
     return u;
+}
+
+
+//- Every index a read cover holds points into the file's own tables, so
+//  that a damaged file is an error naming it, not a crash in the solver
+void checkIndices(const fs::path& file, const nmmMeshFile::contents& c)
+{
+    const physicalCover& m = *c.mesh;
+    const auto outside = [](label i, std::size_t n) { return i < 0 || std::size_t(i) >= n; };
+    for (const auto& p : m.patches())
+    {
+        if (outside(p.node, c.nodes.size())) badFile(file, "a patch's node is not in cover/nodes");
+    }
+    for (const auto& e : m.elements())
+    {
+        bool ok = !outside(e.triangle, c.triangles.size()) && !e.loops.empty();
+        for (const label p : e.patches) ok = ok && !outside(p, m.nPatches());
+        if (!ok) badFile(file, "an element's triangle, patches or loops are not valid");
+    }
+    for (const auto& t : c.triangles)
+    {
+        for (const auto n : t)
+        {
+            if (outside(label(n), c.nodes.size()))
+            {
+                badFile(file, "a triangle's node is not in cover/nodes");
+            }
+        }
+    }
+    for (const auto& sg : m.segments())
+    {
+        if (outside(sg.element, m.nElements())) badFile(file, "a segment's element is not valid");
+    }
 }
 
 } // End anonymous namespace
@@ -467,6 +501,7 @@ nmmMeshFile::contents nmmMeshFile::read(const fs::path& file)
     (
         std::move(patches), std::move(elements), std::move(segments), std::move(u)
     );
+    checkIndices(file, c);
     return c;
 }
 
@@ -490,7 +525,18 @@ std::string nmmMeshFile::fingerprint(const dictionary& meshDict)
 std::string nmmMeshFile::whyNotCurrent(const fs::path& file, const dictionary& meshDict)
 {
     if (!fs::exists(file)) return "there is no " + file.string();
-    const hdf5File in = hdf5File::openRead(file);
+    // Whoever runs the solver can do without the file: one it cannot open
+    // is a reason to cut, not to stop
+    std::optional<hdf5File> opened;
+    try
+    {
+        opened.emplace(hdf5File::openRead(file));
+    }
+    catch (const fatalError& e)
+    {
+        return file.string() + " cannot be read (" + e.what() + ")";
+    }
+    const hdf5File& in = *opened;
     if
     (
         !in.hasAttribute("/", "formatVersion")

@@ -1,7 +1,7 @@
-#include "nmmSolid/output/hdf5/hdf5File/hdf5File.H"
+#include "nmmSolid/io/hdf5File/hdf5File.H"
 
 #include "nmmSolid/global/fatalError/fatalError.H"
-#include "nmmSolid/output/vtk/atomicFile/atomicFile.H"
+#include "nmmSolid/io/atomicFile/atomicFile.H"
 
 #include <hdf5.h>
 

@@ -1,4 +1,4 @@
-#include "nmmSolid/output/vtk/atomicFile/atomicFile.H"
+#include "nmmSolid/io/atomicFile/atomicFile.H"
 
 #include "nmmSolid/global/fatalError/fatalError.H"
 
