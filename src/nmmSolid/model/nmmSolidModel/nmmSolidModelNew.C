@@ -120,7 +120,7 @@ std::unique_ptr<contactProperties> readContacts
 
 //- Every block a cover's patches, elements and segments name is one of
 //  nBlocks
-bool blocksOf(const physicalCover& pc, std::size_t nBlocks)
+bool withinBlocks(const physicalCover& pc, std::size_t nBlocks)
 {
     const auto in = [&](auto b) { return b >= 0 && std::size_t(b) < nBlocks; };
     bool ok = true;
@@ -155,7 +155,7 @@ std::unique_ptr<physicalCover> storedOrCut
         nmmMeshFile::contents stored = nmmMeshFile::read(file);
         const bool sameCover =
             stored.nodes == cover.nodes() && stored.triangles == cover.triangles();
-        if (sameCover && blocksOf(*stored.mesh, geometry.nBlocks()))
+        if (sameCover && withinBlocks(*stored.mesh, geometry.nBlocks()))
         {
             origin = "read from constant/nmmMesh/nmmMesh.h5";
             return std::move(stored.mesh);
