@@ -25,12 +25,18 @@ namespace
 constexpr double rho = 2000, g = 9.81;
 
 //- A 1 x 1 block on a 4 x 1 base, the base fixed (fixed yes) or held at
-//  its bottom by a prescribed displacement
-std::unique_ptr<testCase> restingBlock(const std::string& baseFixed, const std::string& method)
+//  its bottom by a prescribed displacement; the base rock, or steel
+std::unique_ptr<testCase> restingBlock
+(
+    const std::string& baseFixed,
+    const std::string& method,
+    const std::string& baseMaterial = "rock"
+)
 {
     auto c = std::make_unique<testCase>
     (
-        "base { material rock; " + baseFixed + " polygon ((0 -1) (4 -1) (4 0) (0 0)); }"
+        "base { material " + baseMaterial + "; " + baseFixed
+        + " polygon ((0 -1) (4 -1) (4 0) (0 0)); }"
         "block { material rock; polygon ((1 0) (2 0) (2 1) (1 1)); }",
         "held { type box; min (-1 -1.001); max (5 -0.999); }",
         "type structured; cellSize 0.25;",
@@ -41,7 +47,8 @@ std::unique_ptr<testCase> restingBlock(const std::string& baseFixed, const std::
     );
     c->dir.write("constant/mechanicalProperties", std::string(header)
         + "planeStress no; thickness 1;\n"
-          "materials { rock { type linearElastic; E 1e9; nu 0.25; rho 2000; } }\n");
+          "materials { rock { type linearElastic; E 1e9; nu 0.25; rho 2000; }"
+          " steel { type linearElastic; E 1e11; nu 0.3; rho 7800; } }\n");
     return c;
 }
 
@@ -118,6 +125,22 @@ TEST(fixedBlock, carriesTheWeightOfABlockOnItWithoutMoving)
         EXPECT_NEAR(F.y(), weight, 1e-3*weight);
         EXPECT_NEAR(F.x(), 0, 1e-3*weight);
         EXPECT_LT(largestDisplacement(*m, 1), 1e-4);
+    }
+}
+
+
+TEST(fixedBlock, leavesTheAutomaticPenaltyToTheBlocksThatMove)
+{
+    // A rigid container's stiffness is in no equation: the automatic
+    // penalty is 50 times the modulus of the blocks that move (the rock
+    // block's 1e9), not the steel base's 1e11, unless the base moves too
+    for (const bool fixed : {true, false})
+    {
+        SCOPED_TRACE(fixed ? "base fixed" : "base held");
+        const auto c = restingBlock(fixed ? "fixed yes;" : "", "penalty", "steel");
+        const auto m = c->model();
+        ASSERT_NE(m->contacts(), nullptr);
+        EXPECT_DOUBLE_EQ(m->contacts()->parameters().normalPenalty, 50*(fixed ? 1e9 : 1e11));
     }
 }
 

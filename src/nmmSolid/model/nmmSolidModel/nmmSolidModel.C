@@ -111,9 +111,27 @@ nmmSolidModel::nmmSolidModel(parts p)
 }
 
 
+double nmmSolidModel::largestMovingModulus() const
+{
+    // A fixed block is rigid: its material's stiffness is in no equation,
+    // and a stiff container's would make every grain's springs stiffer
+    // than the grains (a steel box round rock grains: 20 times), which
+    // slows the contact solve of a dense pack without a physical reason
+    double largest = 0;
+    const auto& blocks = parts_.geometry->blocks();
+    for (std::size_t b = 0; b < blocks.size(); ++b)
+    {
+        if (blocks[b].fixed()) continue;
+        const solidMaterial& m = parts_.properties->material(materialOfBlock_[b]);
+        largest = std::max(largest, m.stiffnessModulus());
+    }
+    return largest > 0 ? largest : parts_.properties->largestE();
+}
+
+
 void nmmSolidModel::createContacts()
 {
-    largestModulus_ = parts_.properties->largestE();
+    largestModulus_ = largestMovingModulus();
     if (!parts_.contactMethod)
     {
         parts_.contactMethod = contactSolver::New(dictionary("contact"));
@@ -441,7 +459,7 @@ std::string nmmSolidModel::penaltyAgainstModulus() const
     const double penalty = contacts()->parameters().normalPenalty;
     std::ostringstream os;
     os << "the normal penalty " << penalty << " is " << penalty/largestModulus_
-        << " times the largest modulus " << largestModulus_;
+        << " times the largest modulus of the blocks that move " << largestModulus_;
     return os.str();
 }
 

@@ -56,7 +56,8 @@ const keywordTable& penaltyOpenClose::keywords()
             " open-close iteration");
         declareMethod(t);
         t.any("normalPenalty", "normal spring stiffness [N/m per m of"
-            " thickness]: auto (50 x largest E) or a number > 0")
+            " thickness]: auto (50 x the largest E of the blocks that are"
+            " not fixed) or a number > 0")
             .defaultValue("auto");
         t.any("shearPenalty", "shear spring stiffness: auto"
             " (normalPenalty/2.5) or a number > 0").defaultValue("auto");
