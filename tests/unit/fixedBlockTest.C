@@ -1,8 +1,9 @@
 // A fixed block (nmmMeshDict: fixed yes) has no unknowns and does not
 // move: a block resting on a fixed base carries its weight on its
 // contacts, the base's patches stay where they are, and the contact space
-// solves the block's contacts with the base on the block's side only. The
-// keyword's bad value is an error that names it.
+// solves the block's contacts with the base on the block's side only; its
+// modulus does not set the automatic penalty. The keyword's bad value is
+// an error that names it.
 #include "nmmSolid/model/nmmSolidModel/nmmSolidModel.H"
 
 #include "modelCase.H"
