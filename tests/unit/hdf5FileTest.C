@@ -90,6 +90,30 @@ TEST(hdf5File, datasetsGroupsAndAttributesRoundTrip)
 }
 
 
+TEST(hdf5File, anAttributeOfAnotherTypeIsAnErrorNamingIt)
+{
+    nmm::test::tempDir dir("hdf5File");
+    const auto file = dir.path / "attributes.h5";
+    {
+        hdf5File out = hdf5File::create(file);
+        out.writeAttribute("/", "title", "restart state");
+        out.writeAttribute("/", "time", 0.5);
+        out.writeAttribute("/", "count", std::int64_t(3));
+        out.commit();
+    }
+    const hdf5File in = hdf5File::openRead(file);
+    std::string msg = errorOf([&] { in.readDoubleAttribute("/", "title"); });
+    EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
+    EXPECT_NE(msg.find("attribute \"title\" of \"/\" is not a number"), std::string::npos) << msg;
+    msg = errorOf([&] { in.readIntAttribute("/", "time"); });
+    EXPECT_NE(msg.find("attribute \"time\" of \"/\" is not an integer"), std::string::npos) << msg;
+    msg = errorOf([&] { in.readStringAttribute("/", "count"); });
+    EXPECT_NE(msg.find("attribute \"count\" of \"/\" is not a string"), std::string::npos) << msg;
+    // An integer is a number
+    EXPECT_EQ(in.readDoubleAttribute("/", "count"), 3.0);
+}
+
+
 TEST(hdf5File, notCommittedLeavesNothing)
 {
     nmm::test::tempDir dir("hdf5File");

@@ -642,38 +642,54 @@ handle openAttribute
 } // End anonymous namespace
 
 
-std::string hdf5File::readStringAttribute
+void hdf5File::readAttribute
 (
     const std::string& object,
-    const std::string& name
+    const std::string& name,
+    const char* kind,
+    bool (*accepts)(std::int64_t type),
+    const std::function<bool(std::int64_t attribute, std::int64_t type)>& read
 ) const
 {
     const std::string what = "cannot read " + attributeWord(object, name);
     const handle attr = openAttribute(*this, file_, object, name);
     const handle type(attr.valid() ? H5Aget_type(attr.get()) : -1, H5Tclose);
     if (!type.valid()) fail(what);
-    if (H5Tget_class(type.get()) != H5T_STRING)
+    if (!accepts(type.get()))
     {
         throw fatalError("HDF5 file " + quoted(path_.string()) + ": "
-            + attributeWord(object, name) + " is not a string");
+            + attributeWord(object, name) + " is not " + kind);
     }
+    if (!read(attr.get(), type.get())) fail(what);
+}
 
-    if (H5Tis_variable_str(type.get()) > 0)
+
+std::string hdf5File::readStringAttribute
+(
+    const std::string& object,
+    const std::string& name
+) const
+{
+    std::string s;
+    const auto isString = [](std::int64_t type) { return H5Tget_class(type) == H5T_STRING; };
+    readAttribute(object, name, "a string", isString, [&](std::int64_t attr, std::int64_t type)
     {
-        // Written by other tools (h5py writes variable-length strings)
-        const handle memType(H5Tcopy(H5T_C_S1), H5Tclose);
-        H5Tset_size(memType.get(), H5T_VARIABLE);
-        char* text = nullptr;
-        if (H5Aread(attr.get(), memType.get(), &text) < 0) fail(what);
-        std::string s = text ? text : "";
-        H5free_memory(text);
-        return s;
-    }
-
-    const std::size_t size = H5Tget_size(type.get());
-    std::string s(size, '\0');
-    if (H5Aread(attr.get(), type.get(), s.data()) < 0) fail(what);
-    s.resize(std::min(s.find('\0'), s.size()));
+        if (H5Tis_variable_str(type) > 0)
+        {
+            // Written by other tools (h5py writes variable-length strings)
+            const handle memType(H5Tcopy(H5T_C_S1), H5Tclose);
+            H5Tset_size(memType.get(), H5T_VARIABLE);
+            char* text = nullptr;
+            if (H5Aread(attr, memType.get(), &text) < 0) return false;
+            s = text ? text : "";
+            H5free_memory(text);
+            return true;
+        }
+        s.assign(H5Tget_size(type), '\0');
+        if (H5Aread(attr, type, s.data()) < 0) return false;
+        s.resize(std::min(s.find('\0'), s.size()));
+        return true;
+    });
     return s;
 }
 
@@ -684,18 +700,16 @@ double hdf5File::readDoubleAttribute
     const std::string& name
 ) const
 {
-    const std::string what = "cannot read " + attributeWord(object, name);
-    const handle attr = openAttribute(*this, file_, object, name);
-    const handle type(attr.valid() ? H5Aget_type(attr.get()) : -1, H5Tclose);
-    if (!type.valid()) fail(what);
-    const H5T_class_t cls = H5Tget_class(type.get());
-    if (cls != H5T_FLOAT && cls != H5T_INTEGER)
-    {
-        throw fatalError("HDF5 file " + quoted(path_.string()) + ": "
-            + attributeWord(object, name) + " is not a number");
-    }
     double v = 0;
-    if (H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &v) < 0) fail(what);
+    const auto isNumber = [](std::int64_t type)
+    {
+        const H5T_class_t cls = H5Tget_class(type);
+        return cls == H5T_FLOAT || cls == H5T_INTEGER;
+    };
+    readAttribute(object, name, "a number", isNumber, [&](std::int64_t attr, std::int64_t)
+    {
+        return H5Aread(attr, H5T_NATIVE_DOUBLE, &v) >= 0;
+    });
     return v;
 }
 
@@ -706,17 +720,12 @@ std::int64_t hdf5File::readIntAttribute
     const std::string& name
 ) const
 {
-    const std::string what = "cannot read " + attributeWord(object, name);
-    const handle attr = openAttribute(*this, file_, object, name);
-    const handle type(attr.valid() ? H5Aget_type(attr.get()) : -1, H5Tclose);
-    if (!type.valid()) fail(what);
-    if (!readableAs<std::int64_t>(type.get()))
-    {
-        throw fatalError("HDF5 file " + quoted(path_.string()) + ": "
-            + attributeWord(object, name) + " is not an integer");
-    }
     std::int64_t v = 0;
-    if (H5Aread(attr.get(), H5T_NATIVE_INT64, &v) < 0) fail(what);
+    const auto isInteger = [](std::int64_t type) { return readableAs<std::int64_t>(type); };
+    readAttribute(object, name, "an integer", isInteger, [&](std::int64_t attr, std::int64_t)
+    {
+        return H5Aread(attr, H5T_NATIVE_INT64, &v) >= 0;
+    });
     return v;
 }
 
