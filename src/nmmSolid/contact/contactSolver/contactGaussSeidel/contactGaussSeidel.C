@@ -249,11 +249,15 @@ void contactGaussSeidel::buildContactSpace(bool fresh)
         blocks_.clear();
         sides_.assign(nc, {{{-1, -1}, {-1, -1}}});
         blockOfBody_.assign(bodies_.size(), -1);
+        lambda_.assign(nc, Eigen::Vector2d::Zero());
     }
     std::vector<char> grown(blocks_.size(), 0);
     for (std::size_t i = 0; i < nc; ++i)
     {
         if (!included_[i] || sides_[i][0][0] >= 0) continue;
+        // A contact joining the space starts from its forces at the
+        // step's start; those in it keep theirs
+        lambda_[i] = c.startForces(i);
         int nSides = 0;
         for (int spring = 0; spring < 2; ++spring)
         {
@@ -304,13 +308,6 @@ void contactGaussSeidel::buildContactSpace(bool fresh)
 }
 
 
-Eigen::Vector2d contactGaussSeidel::lambdaOf(std::size_t i) const
-{
-    const auto& [k, at] = sides_[i][0];
-    return blocks_[std::size_t(k)].lambda.segment<2>(at);
-}
-
-
 Eigen::Vector2d contactGaussSeidel::othersOf(std::size_t i) const
 {
     Eigen::Vector2d rho = free_[i];
@@ -318,10 +315,7 @@ Eigen::Vector2d contactGaussSeidel::othersOf(std::size_t i) const
     rho -= Wii_[i]*lambdaOf(i);
     for (const auto& [k, at] : sides_[i])
     {
-        if (k < 0) continue;
-        const bodyBlock& bb = blocks_[std::size_t(k)];
-        rho[0] += bb.W.col(at).dot(bb.lambda);
-        rho[1] += bb.W.col(at + 1).dot(bb.lambda);
+        if (k >= 0) rho += blocks_[std::size_t(k)].Wlambda.segment<2>(at);
     }
     return rho;
 }
@@ -329,10 +323,41 @@ Eigen::Vector2d contactGaussSeidel::othersOf(std::size_t i) const
 
 void contactGaussSeidel::setLambda(std::size_t i, const Eigen::Vector2d& lambda)
 {
+    const Eigen::Vector2d change = lambda - lambda_[i];
+    if (change.isZero(0)) return;
+    lambda_[i] = lambda;
     for (const auto& [k, at] : sides_[i])
     {
-        if (k >= 0) blocks_[std::size_t(k)].lambda.segment<2>(at) = lambda;
+        if (k < 0) continue;
+        bodyBlock& bb = blocks_[std::size_t(k)];
+        bb.Wlambda.noalias() += bb.W.middleCols<2>(at)*change;
     }
+}
+
+
+void contactGaussSeidel::storeLambda(std::size_t i, const Eigen::Vector2d& lambda)
+{
+    lambda_[i] = lambda;
+}
+
+
+void contactGaussSeidel::multiply(bodyBlock& bb) const
+{
+    const std::size_t nb = bb.contacts.size();
+    Eigen::VectorXd lambda(2*long(nb));
+    for (std::size_t a = 0; a < nb; ++a)
+    {
+        lambda.segment<2>(2*long(a)) = lambda_[std::size_t(bb.contacts[a])];
+    }
+    bb.Wlambda.noalias() = bb.W*lambda;
+}
+
+
+void contactGaussSeidel::refreshProducts()
+{
+    const long nb = long(blocks_.size());
+    #pragma omp parallel for schedule(dynamic, 16) if (nb >= minThreadedBlocks)
+    for (long k = 0; k < nb; ++k) multiply(blocks_[std::size_t(k)]);
 }
 
 
@@ -369,8 +394,9 @@ bool contactGaussSeidel::polish(bool fresh)
     {
         if (rowOf_[i] < 0 || !isClosed(directEquations_[i].state)) continue;
         c.setForces(i, lambda.segment<2>(rowOf_[i]));
-        setLambda(i, lambda.segment<2>(rowOf_[i]));
+        storeLambda(i, lambda.segment<2>(rowOf_[i]));
     }
+    refreshProducts();
     return true;
 }
 
@@ -508,7 +534,7 @@ long contactGaussSeidel::statesOfSolution(std::vector<int>& flips, long& held)
         const Eigen::Vector2d solved = lambdaOf(i);
         const contactState before = c.equations(i).state;
         bool changed = false;
-        setLambda(i, c.relax(i, rho[i], Wii_[i], changed));
+        storeLambda(i, c.relax(i, rho[i], Wii_[i], changed));
         if (!changed) continue;
         if (++flips[i] > 2)
         {
@@ -527,18 +553,19 @@ long contactGaussSeidel::statesOfSolution(std::vector<int>& flips, long& held)
                 if (-solved[0] < c.penalties(i)[0]*penetration)
                 {
                     c.setForces(i, solved, before);
-                    setLambda(i, solved);
+                    storeLambda(i, solved);
                 }
             }
             else if (before == contactState::sliding && after == contactState::bonded)
             {
                 c.setForces(i, solved, contactState::sliding);
-                setLambda(i, solved);
+                storeLambda(i, solved);
             }
             continue;
         }
         ++changes;
     }
+    refreshProducts();
     held += heldHere;
     return changes;
 }
@@ -546,8 +573,7 @@ long contactGaussSeidel::statesOfSolution(std::vector<int>& flips, long& held)
 
 bool contactGaussSeidel::activeSet(int& solves)
 {
-    std::vector<Eigen::VectorXd> iterate;
-    for (const bodyBlock& bb : blocks_) iterate.push_back(bb.lambda);
+    const std::vector<Eigen::Vector2d> iterate = lambda_;
     std::vector<int> flips(sides_.size(), 0);
     long lastChanges = 0;
     int rising = 0;
@@ -582,7 +608,8 @@ bool contactGaussSeidel::activeSet(int& solves)
     }
     // Back to the Gauss-Seidel iterate, which a cycle of states would
     // otherwise reset to the same solves
-    for (std::size_t k = 0; k < blocks_.size(); ++k) blocks_[k].lambda = iterate[k];
+    lambda_ = iterate;
+    refreshProducts();
     return false;
 }
 
@@ -658,14 +685,7 @@ void contactGaussSeidel::buildBlock(bodyBlock& bb) const
         }
     }
     bb.W = bodies_.contactOperator(std::size_t(bb.body), R, terms);
-    // The rows it had keep their forces; the new ones start from their
-    // contacts' forces at the step's start
-    const long kept = bb.lambda.size();
-    bb.lambda.conservativeResize(R);
-    for (long r = kept; r < R; r += 2)
-    {
-        bb.lambda.segment<2>(r) = c.startForces(std::size_t(bb.contacts[std::size_t(r/2)]));
-    }
+    multiply(bb);
 }
 
 
