@@ -268,7 +268,8 @@ TEST(contactGaussSeidel, keywords)
         dir.write("contact", std::string(header) + text);
         return nm::contactSolver::New(nm::dictionary::read(dir.path/"contact"));
     };
-    EXPECT_NO_THROW(read("method gaussSeidel; tolerance 1e-8; maxSweeps 50;"));
+    EXPECT_NO_THROW(read("method gaussSeidel; tolerance 1e-8; maxSweeps 50;"
+        " maxActiveSetTries 3;"));
     try
     {
         read("method gaussSeidel; tolerence 1e-8;");
@@ -280,4 +281,5 @@ TEST(contactGaussSeidel, keywords)
     }
     EXPECT_THROW(read("method gaussSeidel; tolerance 0;"), nm::IOerror);
     EXPECT_THROW(read("method gaussSeidel; maxSweeps 0;"), nm::IOerror);
+    EXPECT_THROW(read("method gaussSeidel; maxActiveSetTries 0;"), nm::IOerror);
 }

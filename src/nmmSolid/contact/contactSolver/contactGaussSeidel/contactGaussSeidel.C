@@ -72,6 +72,9 @@ const keywordTable& contactGaussSeidel::keywords()
             .defaultValue(1e-6).above(0).below(1e-2);
         t.integer("maxSweeps", "Gauss-Seidel sweeps over the contacts before"
             " the step is cut and redone").defaultValue(1000).atLeast(1);
+        t.integer("maxActiveSetTries", "tries of the direct solves' active set"
+            " that may fail in a step before it is cut and redone, rather than"
+            " swept on to maxSweeps").defaultValue(2).atLeast(1);
         return t;
     }();
     return table;
@@ -85,6 +88,7 @@ contactGaussSeidel::contactGaussSeidel(const dictionary& d)
     const keywordTable& k = keywords();
     tolerance_ = k.get<double>(d, "tolerance");
     maxSweeps_ = k.get<int>(d, "maxSweeps");
+    maxActiveSetTries_ = k.get<int>(d, "maxActiveSetTries");
 }
 
 
@@ -632,7 +636,8 @@ long contactGaussSeidel::openPulledSliding()
 
 std::pair<int, bool> contactGaussSeidel::sweep(stepReport& report, std::ostream* log)
 {
-    int sweeps = 0, quiet = 0, solves = 0, quietNeeded = quietSweeps;
+    int sweeps = 0, quiet = 0, solves = 0, quietNeeded = quietSweeps, failed = 0;
+    triesFailed_ = false;
     while (sweeps < maxSweeps_)
     {
         const auto [change, size, changes] = sweepOnce();
@@ -649,6 +654,10 @@ std::pair<int, bool> contactGaussSeidel::sweep(stepReport& report, std::ostream*
             settled = activeSet(solves);
             quiet = 0;
             quietNeeded *= 2;
+            // The sweeps after failed tries seldom settle the step, and
+            // those that do take hundreds more: a shorter step is cheaper
+            triesFailed_ = !settled && ++failed == maxActiveSetTries_;
+            if (triesFailed_) break;
         }
         if (!settled) continue;
         const long broken = contacts().breakOverloadedBonds();
@@ -659,6 +668,7 @@ std::pair<int, bool> contactGaussSeidel::sweep(stepReport& report, std::ostream*
         }
         report.bondsBroken += broken;
         quietNeeded = quietSweeps;
+        failed = 0;
         if (log)
         {
             *log << "    Gauss-Seidel: " << broken << " bonds broken after "
@@ -692,6 +702,11 @@ void contactGaussSeidel::buildBlock(bodyBlock& bb) const
 std::string contactGaussSeidel::cutReason(bool settled, const stepReport& report) const
 {
     if (byPenalty_ || settled) return penaltyOpenClose::cutReason(settled, report);
+    if (triesFailed_)
+    {
+        return "the direct contact-space solves' active set failed "
+            + std::to_string(maxActiveSetTries_) + " times";
+    }
     return "the Gauss-Seidel sweeps did not settle in " + std::to_string(maxSweeps_)
         + " sweeps";
 }
