@@ -124,7 +124,7 @@ LINES = [
     ("largest grain rotation [deg]", "{maxGrainRotation_deg:.1f} ({maxGrainRotationGrain})"),
     ("grains turned by more than 10 deg", "{grainsRotatedOver10deg} of {grains}"),
     ("closed contacts at the end", "{closedContactsEnd}"),
-    ("steps (of them cut and redone)", "{steps} ({cuts})"),
+    ("steps (and attempts cut and redone)", "{steps} ({cuts})"),
     ("unknowns", "{unknowns}"),
     ("wall time [s]", "{clockTime_s:.0f}"),
 ]
