@@ -254,7 +254,10 @@ void contactGaussSeidel::buildContactSpace(bool fresh)
         sides_.assign(nc, {{{-1, -1}, {-1, -1}}});
         blockOfBody_.assign(bodies_.size(), -1);
         lambda_.assign(nc, Eigen::Vector2d::Zero());
+        rowsOfClosed_.assign(nc, 0);
     }
+    // The blocks change: the direct solves' rows are numbered again
+    rowOf_.clear();
     std::vector<char> grown(blocks_.size(), 0);
     for (std::size_t i = 0; i < nc; ++i)
     {
@@ -347,13 +350,12 @@ void contactGaussSeidel::storeLambda(std::size_t i, const Eigen::Vector2d& lambd
 
 void contactGaussSeidel::multiply(bodyBlock& bb) const
 {
-    const std::size_t nb = bb.contacts.size();
-    Eigen::VectorXd lambda(2*long(nb));
-    for (std::size_t a = 0; a < nb; ++a)
+    // Column pairs at a time: no gathered copy of the forces to allocate
+    bb.Wlambda.setZero(bb.W.rows());
+    for (std::size_t a = 0; a < bb.contacts.size(); ++a)
     {
-        lambda.segment<2>(2*long(a)) = lambda_[std::size_t(bb.contacts[a])];
+        bb.Wlambda.noalias() += bb.W.middleCols<2>(2*long(a))*lambda_[std::size_t(bb.contacts[a])];
     }
-    bb.Wlambda.noalias() = bb.W*lambda;
 }
 
 
@@ -385,9 +387,9 @@ std::tuple<double, double, long> contactGaussSeidel::sweepOnce()
 }
 
 
-bool contactGaussSeidel::polish(bool fresh)
+bool contactGaussSeidel::polish()
 {
-    numberDirectRows(fresh);
+    numberDirectRows();
     if (directRows_ == 0) return true;
     Eigen::VectorXd lambda;
     assembleDirect(lambda);
@@ -405,29 +407,33 @@ bool contactGaussSeidel::polish(bool fresh)
 }
 
 
-void contactGaussSeidel::numberDirectRows(bool fresh)
+void contactGaussSeidel::numberDirectRows()
 {
-    // Within an active set the rows stay those of its first solve: a
-    // contact that opens keeps its rows as lambda = 0 with W's entries
-    // kept as zeros, so the pattern, and with it the sparse LU's analysis
-    // and pivot order, change only when a contact closes
+    // A contact closed in one of the step's direct solves keeps its rows
+    // for the rest of the step: when it opens, as lambda = 0 with W's
+    // entries kept as zeros. So the pattern, and with it the sparse LU's
+    // analysis and pivot order, changes only when a contact closes there
+    // for the first time in the step, not each time one closes again or
+    // a try begins (see rowsOfClosed_)
     const contactModel& c = contacts();
     const std::size_t nc = sides_.size();
     auto& eq = directEquations_;
     eq.resize(nc);
     #pragma omp parallel for schedule(static) if (long(nc) >= minThreadedContacts)
     for (std::size_t i = 0; i < nc; ++i) eq[i] = c.equations(i);
-    bool newRows = fresh || rowOf_.size() != nc;
-    for (std::size_t i = 0; i < nc && !newRows; ++i)
+    bool newRows = rowOf_.size() != nc;
+    for (std::size_t i = 0; i < nc; ++i)
     {
-        newRows = isClosed(eq[i].state) && sides_[i][0][0] >= 0 && rowOf_[i] < 0;
+        if (!isClosed(eq[i].state) || sides_[i][0][0] < 0 || rowsOfClosed_[i]) continue;
+        rowsOfClosed_[i] = 1;
+        newRows = true;
     }
     if (!newRows) return;
     rowOf_.assign(nc, -1);
     directRows_ = 0;
     for (std::size_t i = 0; i < nc; ++i)
     {
-        if (isClosed(eq[i].state) && sides_[i][0][0] >= 0)
+        if (rowsOfClosed_[i] && sides_[i][0][0] >= 0)
         {
             rowOf_[i] = directRows_;
             directRows_ += 2;
@@ -583,7 +589,7 @@ bool contactGaussSeidel::activeSet(int& solves)
     int rising = 0;
     for (int k = 0; k < maxActiveSetSolves; ++k)
     {
-        if (!polish(k == 0)) break;
+        if (!polish()) break;
         ++solves;
         long held = 0;
         const long changes = statesOfSolution(flips, held);
@@ -597,7 +603,7 @@ bool contactGaussSeidel::activeSet(int& solves)
             // closed contacts are solved again
             for (int again = 0; held > 0 && again <= maxPulledSolves; ++again)
             {
-                if (!polish(false)) break;
+                if (!polish()) break;
                 ++solves;
                 if (again == maxPulledSolves || openPulledSliding() == 0) break;
             }
