@@ -601,8 +601,11 @@ bool contactGaussSeidel::activeSet(int& solves)
         ++solves;
         long held = 0;
         const long changes = statesOfSolution(flips, held);
-        if (changes == 0 && (held == 0 || solveHeld(solves))) return true;
-        if (changes == 0) break;
+        if (changes == 0)
+        {
+            if (held == 0 || solveHeld(solves)) return true;
+            break;
+        }
         if (k == 0 || changes < fewest)
         {
             if (k > 0) resume = lambda_;
