@@ -40,6 +40,17 @@ std::uint64_t key(const kernel::Point_2& p)
     return key(std::llround(p.x()), std::llround(p.y()));
 }
 
+//- A fraction in [0, 1) that depends on a point's key only (splitmix64's
+//  finaliser, so that neighbouring points get unrelated fractions)
+double tieBreak(std::uint64_t k)
+{
+    k += 0x9e3779b97f4a7c15ULL;
+    k = (k ^ (k >> 30))*0xbf58476d1ce4e5b9ULL;
+    k = (k ^ (k >> 27))*0x94d049bb133111ebULL;
+    k ^= k >> 31;
+    return double(k >> 11)*0x1p-53;
+}
+
 
 //- What goes into the triangulation
 struct polylines
@@ -101,9 +112,15 @@ polylines toInsert
 class tracedDistanceCost
 {
     const polylines* lines_;
+    //- The squared tolerance
+    double limit_;
 
 public:
-    explicit tracedDistanceCost(const polylines& lines) : lines_(&lines) {}
+    tracedDistanceCost(const polylines& lines, double limit)
+    :
+        lines_(&lines),
+        limit_(limit)
+    {}
 
     template<class CDT>
     auto operator()
@@ -133,6 +150,13 @@ public:
                 *cost = (std::max)(*cost, CGAL::squared_distance(pr, c));
             }
         }
+        // CGAL's queue takes equal costs (a grid has many) in the order of
+        // its constraints, which follows their addresses in memory: one
+        // image gave other outlines from a case folder of another name.
+        // Less a part in 1e12 of the tolerance, set by the point alone,
+        // they are ordered by the point instead, and a cost at the
+        // tolerance stays below it
+        *cost -= 1e-12*limit_*tieBreak(key((*q)->point()));
         return cost;
     }
 };
@@ -172,7 +196,12 @@ std::optional<std::vector<std::vector<gridPoint>>> simplify
     // those on a straight run)
     const double threshold =
         std::nextafter(tolerance*tolerance, std::numeric_limits<double>::infinity());
-    PS::simplify(ct, tracedDistanceCost(lines), PS::Stop_above_cost_threshold(threshold));
+    PS::simplify
+    (
+        ct,
+        tracedDistanceCost(lines, tolerance*tolerance),
+        PS::Stop_above_cost_threshold(threshold)
+    );
 
     std::vector<std::vector<gridPoint>> result(lines.points.size());
     for (std::size_t c = 0; c < ids.size(); ++c)
