@@ -13,9 +13,24 @@ energy balance and the contact limits:
     contact - work of gravity, starts at 0 and can only be dissipated:
     it never rises by more than 1e-3 of the work done by the end in one
     step, and ends below 0;
-  - contacts (postProcessing/contacts): the largest penetration of a
-    closed contact in the last step is below 1e-6 m, about 1e-6 of the
-    box's width (the pile rests on its springs);
+  - the write times: every time directory is a multiple of the
+    controlDict's writeInterval (to 1e-9 of it). A step fitted to end on
+    a write time and cut and redone 0.7 times as long once wrote where it
+    ended: "0.199538";
+  - statics at rest (the last contact frame): the forces the box carries
+    add up to the grains' weight, rho g times their areas in the first
+    frame, within 1e-3 of it, vertically and sideways (measured: 3e-5
+    and 4e-5);
+  - the pile rests on its springs: at every closed contact of the last
+    frame the normal force is the spring's, kN times the penetration,
+    within 1e-6 of the weight (kN = normalPenalty x max(l/lRef, 0.05),
+    l the contact's tributary length, normalPenalty and lRef as the log
+    prints them: docs/case-reference.md), and no spring carries more than
+    the whole weight. So no contact has sunk further than the pile's
+    weight would push it on its own spring. (Until 2026-12-08 the bound
+    was 1e-6 m on every contact; a corner resting on the floor has a
+    spring 0.2 of the reference and sank 1.07e-6 m under 0.19 of the
+    weight once the write times were mended);
   - the law (VTK/contacts.vtp.series, every written frame): no sliding
     contact carries tension. Mohr-Coulomb slides a contact without
     cohesion only while it is pressed; a sliding contact pulled apart
@@ -36,6 +51,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2]/"bin"/"tools"))
 import nmmVtk  # noqa: E402
+import numpy  # noqa: E402
 
 
 def table(path):
@@ -55,6 +71,73 @@ def slidingInTension(frames):
             if state == 2 and fn < 0:
                 found.append((path.name, fn))
     return found
+
+
+def offTheWriteGrid(case):
+    """Time directories that are not multiples of writeInterval."""
+    control = (case/"system/controlDict").read_text()
+    interval = float(re.search(r"(?m)^writeInterval\s+([^;\s]+)\s*;", control).group(1))
+    found = []
+    for d in case.iterdir():
+        try:
+            t = float(d.name)
+        except ValueError:
+            continue
+        if abs(t/interval - round(t/interval)) > 1e-9:
+            found.append("time directory %s is not a multiple of writeInterval %g"
+                         % (d.name, interval))
+    return found
+
+
+def grainWeight(case):
+    """rho g times the grains' areas in the first frame [N/m]: every block
+    but the box (block 0), of the tutorial's single grain material."""
+    first = nmmVtk.readSeries(case)[0][1]
+    f = nmmVtk.readFrame(first)
+    props = (case/"constant/mechanicalProperties").read_text()
+    rho = float(re.search(r"rock\s*\{[^}]*\brho\s+([^;\s]+)", props).group(1))
+    g = abs(float(re.search(r"value\s*\(\s*\S+\s+(\S+)",
+                            (case/"constant/g").read_text()).group(1)))
+    area = 0.0
+    for cell, block in zip(f.cells, f.cellData["blockId"]):
+        if int(block) == 0:
+            continue
+        x, y = f.x[cell, 0], f.x[cell, 1]
+        area += 0.5*float((x*numpy.roll(y, -1) - numpy.roll(x, -1)*y).sum())
+    return rho*g*area
+
+
+def restsOnItsSprings(case, log, path):
+    """Statics and the spring law at the contacts of the last frame."""
+    m = re.search(r"contact: normalPenalty (\S+),.*tributary length of (\S+)\)", log)
+    if not m:
+        return ["no contact penalty line in log.nmmSolidFoam"]
+    normalPenalty, lRef = float(m.group(1)), float(m.group(2))
+    weight = grainWeight(case)
+    d = nmmVtk.readContacts(path).data
+    carried = numpy.zeros(2)
+    largest = (0.0, 0.0, 0.0)
+    failures = []
+    for state, a, b, force, fn, p, l in zip(
+            d["contactState"], d["blockA"], d["blockB"], d["force"],
+            d["normalForce"], d["penetration"], d["length"]):
+        if state == 0:
+            continue
+        # The force acts on blockA
+        carried += -force[:2] if int(b) == 0 else force[:2] if int(a) == 0 else 0
+        spring = normalPenalty*max(l/lRef, 0.05)*p
+        largest = max(largest, (p, spring, fn))
+        if abs(fn - spring) > 1e-6*weight or spring > weight:
+            failures.append("%s: a contact with %.4g N/m of normal force and"
+                            " %.3g m of penetration (its spring %.4g N/m, the"
+                            " weight %.4g N/m)" % (path.name, fn, p, spring, weight))
+    print("the grains weigh %.6g N/m; the box carries (%.4g, %.6g) N/m; the"
+          " deepest contact %.3g m, %.4g N/m on its spring"
+          % (weight, carried[0], carried[1], largest[0], largest[1]))
+    if not (abs(carried[1] + weight) <= 1e-3*weight and abs(carried[0]) <= 1e-3*weight):
+        failures.append("the box carries (%.4g, %.4g) N/m of the grains' %.4g N/m"
+                        % (carried[0], carried[1], weight))
+    return failures
 
 
 def main(argv):
@@ -102,13 +185,11 @@ def main(argv):
     if not balance[-1][5] < 0:
         failures.append("the total energy ends at %.3g J, not below 0" % balance[-1][5])
 
-    # time deltaT open bonded sliding bondsBroken maxPenetration ...
-    penetration = contacts[-1][6]
-    print("largest penetration in the last step %.3g m (bound 1e-6 m)" % penetration)
-    if not penetration < 1e-6:
-        failures.append("largest penetration %.3g m in the last step" % penetration)
+    failures += offTheWriteGrid(case)
 
     frames = nmmVtk.readContactSeries(case)
+    if frames:
+        failures += restsOnItsSprings(case, log, frames[-1][1])
     pulled = slidingInTension(frames)
     print("sliding contacts in tension in %d frames: %d" % (len(frames), len(pulled)))
     if not frames:

@@ -249,6 +249,100 @@ TEST(Time, adjustableRunTimeHitsUnevenWriteTimes)
 }
 
 
+namespace
+{
+
+const std::string cutShortDict = std::string(header) + "endTime 1e-3;"
+    " deltaT 1e-4; writeControl adjustableRunTime; writeInterval 2.5e-4;"
+    " adjustTimeStep yes; maxDeltaT 1e-4;";
+
+//- The time loop of nmmSolidFoam where the solver cuts the step fitted to
+//  land on each write time (its first attempt), and redoes it 0.7 times
+//  as long: the redone step ends 0.3 of the fitted step short, within half
+//  of its own length. cut counts the write times whose step was cut;
+//  stopAfterCut ends the run (written) after that many cuts
+std::vector<double> cutLandingSteps(Time& runTime, long long& cut, long long stopAfterCut = -1)
+{
+    const double interval = runTime.writeInterval();
+    std::vector<double> written;
+    while (runTime.run())
+    {
+        runTime.setDeltaT(std::min(runTime.controlDeltaT(), runTime.maxDeltaT()));
+        const double fitted = runTime.deltaTValue();
+        const auto target = std::llround(std::ceil((runTime.value() + 0.5*fitted)/interval));
+        const bool lands = std::abs(runTime.value() + fitted - double(target)*interval) < 1e-12;
+        const bool cutting = lands && target > cut;
+        if (cutting)
+        {
+            runTime.setDeltaT(0.7*fitted, false);
+            cut = target;
+        }
+        ++runTime;
+        runTime.write();
+        if (runTime.writeTime()) written.push_back(runTime.value());
+        if (cutting && cut == stopAfterCut) runTime.writeAndEnd();
+    }
+    return written;
+}
+
+} // End anonymous namespace
+
+
+TEST(Time, aStepCutShortOfAWriteTimeDoesNotWriteThere)
+{
+    // Not an OpenFOAM observation (its solvers do not redo a step): with
+    // half a step of slack each cut step wrote where it ended, 2.5e-5 to
+    // 2.8e-5 early (0.000225, 0.0004725, 0.00072225), and the run ended
+    // at 0.000972225
+    const auto dir = freshCase("cutShort");
+    writeControlDict(dir, cutShortDict);
+    std::ostringstream log;
+    Time::options opts;
+    opts.log = &log;
+    Time runTime(nmm::caseFolder(dir), opts);
+    long long cut = 0;
+    const auto written = cutLandingSteps(runTime, cut);
+
+    EXPECT_EQ(cut, 4);
+    ASSERT_EQ(written.size(), 4u);
+    for (std::size_t i = 0; i < written.size(); ++i)
+    {
+        EXPECT_NEAR(written[i], 2.5e-4*double(i + 1), 1e-18);
+    }
+    EXPECT_NEAR(runTime.value(), 1e-3, 1e-18);
+    EXPECT_EQ(timeDirs(dir), names({"0", "0.00025", "0.0005", "0.00075", "0.001"}));
+}
+
+
+TEST(Time, aRestartAfterAStepCutShortWritesWhatTheRunWould)
+{
+    // The run written and stopped right after the cut step that ends at
+    // 2.25e-4: the restart still writes 2.5e-4
+    const auto dir = freshCase("cutShortRestart");
+    writeControlDict(dir, cutShortDict);
+    std::ostringstream log;
+    Time::options opts;
+    opts.log = &log;
+    long long cut = 0;
+    {
+        Time runTime(nmm::caseFolder(dir), opts);
+        cutLandingSteps(runTime, cut, 1);
+    }
+    ASSERT_EQ(timeDirs(dir), names({"0", "0.000225"}));
+    EXPECT_EQ(uniformTimeEntry(dir, "0.000225", "deltaTCutShort"), "true");
+
+    writeControlDict(dir, "startFrom latestTime; startTime 0; endTime 1e-3;"
+        " deltaT 1e-4; writeControl adjustableRunTime; writeInterval 2.5e-4;"
+        " adjustTimeStep yes; maxDeltaT 1e-4;");
+    Time runTime(nmm::caseFolder(dir), opts);
+    const auto written = cutLandingSteps(runTime, cut);
+
+    ASSERT_EQ(written.size(), 4u);
+    EXPECT_NEAR(written.front(), 2.5e-4, 1e-18);
+    EXPECT_NEAR(runTime.value(), 1e-3, 1e-18);
+}
+
+
 TEST(Time, purgeWriteKeepsTheLastWrittenTimes)
 {
     const auto dir = freshCase("purgeWrite");

@@ -141,13 +141,13 @@ void Time::growPrecision()
 
 bool Time::end() const
 {
-    return value_ > endTime_ + 0.5*deltaT_;
+    return value_ > endTime_ + reachSlack();
 }
 
 
 bool Time::run()
 {
-    bool running = value_ < endTime_ - 0.5*deltaT_;
+    bool running = value_ < endTime_ - reachSlack();
     if (running)
     {
         readModifiedControlDict();
@@ -157,7 +157,7 @@ bool Time::run()
             return false;
         }
         // The re-read may have moved the end
-        running = value_ < endTime_ - 0.5*deltaT_;
+        running = value_ < endTime_ - reachSlack();
     }
     return running;
 }
@@ -189,6 +189,7 @@ Time& Time::operator++()
 
     updateWriteTime();
     applyStopAt();
+    fittedDeltaT_ = 0;
 
     if (writeTime_) growPrecision();
 
@@ -217,9 +218,7 @@ void Time::updateWriteTime()
 
         case writeControlType::runTime:
         case writeControlType::adjustableRunTime:
-            // Half a step of slack: the step that ends nearest to each
-            // multiple of writeInterval writes
-            writeIndex = writeIndexOf((value_ - writeOrigin_) + 0.5*deltaT_);
+            writeIndex = writeIndexOf((value_ - writeOrigin_) + reachSlack());
             break;
 
         case writeControlType::clockTime:
@@ -266,9 +265,14 @@ void Time::applyStopAt()
 
 void Time::setDeltaT(double deltaT, bool adjust)
 {
+    stepCutShort_ = !adjust && deltaT < fittedDeltaT_;
     deltaT_ = deltaT;
     deltaTchanged_ = true;
-    if (adjust) adjustDeltaT();
+    if (adjust)
+    {
+        fittedDeltaT_ = 0;
+        adjustDeltaT();
+    }
 }
 
 
@@ -300,6 +304,7 @@ void Time::adjustDeltaT()
     {
         deltaT_ = std::max(newDeltaT, 0.2*deltaT_);
     }
+    fittedDeltaT_ = deltaT_;
 }
 
 

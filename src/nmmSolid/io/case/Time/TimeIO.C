@@ -403,6 +403,7 @@ void Time::readStartTimeDict()
     {
         deltaTSave_ = deltaT_;
         deltaT0_ = deltaT_;
+        timeDict.readIfPresent("deltaTCutShort", stepCutShort_);
     }
     timeDict.readIfPresent("deltaT0", deltaT0_);
 
@@ -450,7 +451,7 @@ void Time::continueWriteTimes(const dictionary& timeDict)
         // As the step that wrote this time counted it
         writeTimeIndex_ = static_cast<long long>
         (
-            std::min(((value_ - writeOrigin_) + 0.5*deltaT_)/writeInterval_, 1e18)
+            std::min(((value_ - writeOrigin_) + reachSlack())/writeInterval_, 1e18)
         );
     }
 }
@@ -514,6 +515,7 @@ void Time::writeTimeDict(const fs::path& file) const
         << "deltaT " << formatScalar(deltaT_) << ";\n"
         << "deltaT0 " << formatScalar(deltaT0_) << ";\n"
         << "writeOrigin " << formatScalar(writeOrigin_) << ";\n";
+    if (stepCutShort_) text << "deltaTCutShort true;\n";
 
     const dictionary timeDict = dictionary::parse(text.str(), file.string());
 
