@@ -17,6 +17,7 @@ Description
 
 #include <cmath>
 #include <csignal>
+#include <utility>
 
 using namespace nmmTimeTest;
 using nmm::Time;
@@ -256,13 +257,23 @@ const std::string cutShortDict = std::string(header) + "endTime 1e-3;"
     " deltaT 1e-4; writeControl adjustableRunTime; writeInterval 2.5e-4;"
     " adjustTimeStep yes; maxDeltaT 1e-4;";
 
-//- The time loop of nmmSolidFoam where the solver cuts the step fitted to
-//  land on each write time (its first attempt), and redoes it 0.7 times
-//  as long: the redone step ends 0.3 of the fitted step short, within half
-//  of its own length. cut counts the write times whose step was cut;
-//  stopAfterCut ends the run (written) after that many cuts
-std::vector<double> cutLandingSteps(Time& runTime, long long& cut, long long stopAfterCut = -1)
+//- The time loop of nmmSolidFoam on the case in dir, where the solver
+//  cuts the step fitted to land on each write time (its first attempt),
+//  and redoes it 0.7 times as long: the redone step ends 0.3 of the
+//  fitted step short, within half of its own length. cut counts the write
+//  times whose step was cut; stopAfterCut ends the run (written) after
+//  that many cuts. The times written, and where the run ended
+std::pair<std::vector<double>, double> cutLandingSteps
+(
+    const fs::path& dir,
+    long long& cut,
+    long long stopAfterCut = -1
+)
 {
+    std::ostringstream log;
+    Time::options opts;
+    opts.log = &log;
+    Time runTime(nmm::caseFolder(dir), opts);
     const double interval = runTime.writeInterval();
     std::vector<double> written;
     while (runTime.run())
@@ -282,7 +293,7 @@ std::vector<double> cutLandingSteps(Time& runTime, long long& cut, long long sto
         if (runTime.writeTime()) written.push_back(runTime.value());
         if (cutting && cut == stopAfterCut) runTime.writeAndEnd();
     }
-    return written;
+    return {written, runTime.value()};
 }
 
 } // End anonymous namespace
@@ -296,12 +307,8 @@ TEST(Time, aStepCutShortOfAWriteTimeDoesNotWriteThere)
     // at 0.000972225
     const auto dir = freshCase("cutShort");
     writeControlDict(dir, cutShortDict);
-    std::ostringstream log;
-    Time::options opts;
-    opts.log = &log;
-    Time runTime(nmm::caseFolder(dir), opts);
     long long cut = 0;
-    const auto written = cutLandingSteps(runTime, cut);
+    const auto [written, end] = cutLandingSteps(dir, cut);
 
     EXPECT_EQ(cut, 4);
     ASSERT_EQ(written.size(), 4u);
@@ -309,7 +316,7 @@ TEST(Time, aStepCutShortOfAWriteTimeDoesNotWriteThere)
     {
         EXPECT_NEAR(written[i], 2.5e-4*double(i + 1), 1e-18);
     }
-    EXPECT_NEAR(runTime.value(), 1e-3, 1e-18);
+    EXPECT_NEAR(end, 1e-3, 1e-18);
     EXPECT_EQ(timeDirs(dir), names({"0", "0.00025", "0.0005", "0.00075", "0.001"}));
 }
 
@@ -320,26 +327,19 @@ TEST(Time, aRestartAfterAStepCutShortWritesWhatTheRunWould)
     // 2.25e-4: the restart still writes 2.5e-4
     const auto dir = freshCase("cutShortRestart");
     writeControlDict(dir, cutShortDict);
-    std::ostringstream log;
-    Time::options opts;
-    opts.log = &log;
     long long cut = 0;
-    {
-        Time runTime(nmm::caseFolder(dir), opts);
-        cutLandingSteps(runTime, cut, 1);
-    }
+    cutLandingSteps(dir, cut, 1);
     ASSERT_EQ(timeDirs(dir), names({"0", "0.000225"}));
     EXPECT_EQ(uniformTimeEntry(dir, "0.000225", "deltaTCutShort"), "true");
 
     writeControlDict(dir, "startFrom latestTime; startTime 0; endTime 1e-3;"
         " deltaT 1e-4; writeControl adjustableRunTime; writeInterval 2.5e-4;"
         " adjustTimeStep yes; maxDeltaT 1e-4;");
-    Time runTime(nmm::caseFolder(dir), opts);
-    const auto written = cutLandingSteps(runTime, cut);
+    const auto [written, end] = cutLandingSteps(dir, cut);
 
     ASSERT_EQ(written.size(), 4u);
     EXPECT_NEAR(written.front(), 2.5e-4, 1e-18);
-    EXPECT_NEAR(runTime.value(), 1e-3, 1e-18);
+    EXPECT_NEAR(end, 1e-3, 1e-18);
 }
 
 
