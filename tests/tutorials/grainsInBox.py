@@ -123,8 +123,11 @@ def restsOnItsSprings(case, log, path):
             d["normalForce"], d["penetration"], d["length"]):
         if state == 0:
             continue
-        # The force acts on blockA
-        carried += -force[:2] if int(b) == 0 else force[:2] if int(a) == 0 else 0
+        # The force acts on blockA: on the box where it is the vertex's
+        if int(b) == 0:
+            carried -= force[:2]
+        elif int(a) == 0:
+            carried += force[:2]
         spring = normalPenalty*max(l/lRef, 0.05)*p
         largest = max(largest, (p, spring, fn))
         if abs(fn - spring) > 1e-6*weight or spring > weight:
