@@ -141,9 +141,9 @@ def make_case(name, image, writer=write_png, file_name="grains.png", **entries):
     return case
 
 
-def run(app, case, *extra):
+def run(app, case, *extra, env=None):
     p = subprocess.run([str(APPS/app), "-case", str(case), *extra],
-                       capture_output=True, text=True)
+                       capture_output=True, text=True, env=env)
     return p.returncode, p.stdout, p.stderr
 
 
@@ -433,11 +433,11 @@ def test_repeatable():
     shutil.copy(image, case/image.name)
     texts = []
     for tunables in ("", "glibc.malloc.mmap_threshold=4096", "glibc.malloc.top_pad=67108864"):
-        p = subprocess.run([str(APPS/"nmmImageToBlocks"), "-case", str(case)], capture_output=True,
-                           text=True, env=dict(os.environ, GLIBC_TUNABLES=tunables))
-        check(p.returncode == 0, "repeatable: exit 0 with GLIBC_TUNABLES '%s'" % tunables
-              + ("" if p.returncode == 0 else "\n" + p.stdout + p.stderr))
-        texts.append((case/"constant"/"geometry"/"grains").read_text() if p.returncode == 0 else None)
+        code, out, err = run("nmmImageToBlocks", case,
+                             env=dict(os.environ, GLIBC_TUNABLES=tunables))
+        check(code == 0, "repeatable: exit 0 with GLIBC_TUNABLES '%s'" % tunables
+              + ("" if code == 0 else "\n" + out + err))
+        texts.append((case/"constant"/"geometry"/"grains").read_text() if code == 0 else None)
     grains = texts[0].count("material") if texts[0] else 0
     check(texts[0] is not None and texts.count(texts[0]) == 3 and grains == 600,
           "repeatable: the same %d blocks, whatever the allocator's layout" % grains)
